@@ -1,0 +1,43 @@
+/// `stratum samplers`: every registry entry with its kind, dimensions,
+/// randomizers and properties (or JSON with --json).
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "stratum/registry.hpp"
+
+namespace stratum::cli {
+
+static nlohmann::json sampler_json(const SamplerInfo& s) {
+  nlohmann::json params = nlohmann::json::array();
+  for (const auto& p : s.params)
+    params.push_back({{"name", p.name}, {"description", p.description}, {"default", p.default_value}});
+  return {{"name", s.name},         {"kind", s.kind},     {"description", s.description},
+          {"min_dim", s.min_dim},   {"max_dim", s.max_dim}, {"properties", s.properties},
+          {"randomizers", s.randomizers}, {"counts", s.counts}, {"params", params}};
+}
+
+void add_samplers_command(CLI::App& app) {
+  auto* command = app.add_subcommand("samplers", "List every sampler: name, kind, dimensions, properties");
+  auto json = std::make_shared<bool>(false);
+  command->add_flag("--json", *json, "print JSON");
+  command->callback([json] {
+    if (*json) {
+      nlohmann::json list = nlohmann::json::array();
+      for (const auto& s : samplers()) list.push_back(sampler_json(s));
+      nlohmann::json randomizer_list = nlohmann::json::array();
+      for (const auto& [name, description] : randomizers())
+        randomizer_list.push_back({{"name", name}, {"description", description}});
+      fmt::print("{}\n", nlohmann::json{{"samplers", list}, {"randomizers", randomizer_list}}.dump(2));
+      return;
+    }
+    fmt::print("{:<18} {:<9} {:<10} {:<34} {}\n", "name", "kind", "dims", "randomize (default first)", "properties");
+    for (const auto& s : samplers())
+      fmt::print("{:<18} {:<9} {:<10} {:<34} {}\n", s.name, s.kind, fmt::format("{}-{}", s.min_dim, s.max_dim),
+                 fmt::format("{}", fmt::join(s.randomizers, ",")), fmt::join(s.properties, "; "));
+  });
+}
+
+}  // namespace stratum::cli

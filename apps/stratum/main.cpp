@@ -1,0 +1,30 @@
+/// The stratum command line: thin subcommands over the library and registry.
+#include <fmt/core.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+
+#include "commands.hpp"
+#include "stratum/util/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"stratum: Monte Carlo and quasi-Monte Carlo sampling toolkit"};
+  app.require_subcommand(1);
+  stratum::cli::add_samplers_command(app);
+  stratum::cli::add_points_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const stratum::invalid_argument& e) {
+    fmt::print(stderr, "stratum: error: {}\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "stratum: error: out of memory\n");
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "stratum: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,88 @@
+#pragma once
+/// The one registry of stratum: every sampler with its name, description,
+/// dimensions, properties, accepted randomizers and parameters. The CLI, the
+/// Python package, the tests and the benchmarks all iterate over it; adding a
+/// sampler is one entry in one of src/registry/samplers_*.cpp.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stratum {
+
+/// A sampler-specific parameter, given as text ("periodic=1",
+/// "generator=1,55,133") so that every face passes it through unchanged.
+struct ParamSpec {
+  std::string name;
+  std::string description;
+  std::string default_value;  ///< empty: no default (optional)
+};
+
+/// What a caller asks of a sampler.
+struct SamplerRequest {
+  std::optional<std::uint64_t> n;  ///< absent only where a sampler can choose (maximal Poisson disk)
+  unsigned d = 2;
+  std::uint64_t seed = 0;
+  std::string randomize;           ///< empty: the sampler's default
+  std::optional<double> radius;    ///< Poisson disk and friends
+  unsigned threads = 1;
+  std::map<std::string, std::string> params;
+};
+
+/// n points of d coordinates, row-major; the buffer is handed to numpy or a
+/// writer without a copy.
+struct PointSet {
+  std::size_t n = 0;
+  std::size_t d = 0;
+  std::unique_ptr<double[]> data;
+  double operator()(std::size_t i, std::size_t j) const { return data[i * d + j]; }
+};
+
+struct SamplerInfo {
+  std::string name;
+  std::string kind;  ///< "sequence" (index-addressable) or "pattern" (finite set)
+  std::string description;
+  unsigned min_dim = 1;
+  unsigned max_dim = 1;
+  std::vector<std::string> properties;
+  std::vector<std::string> randomizers;  ///< accepted values of --randomize; front() is the default
+  std::string counts;                    ///< which n the sampler takes, in words
+  bool n_optional = false;               ///< may n be left out (then `radius` decides)?
+  std::vector<ParamSpec> params;
+  /// Checks the sampler-specific part of a request (n it can take, params);
+  /// throws stratum::invalid_argument.
+  std::function<void(const SamplerRequest&)> validate;
+  /// Number of points the request will produce, known before generating
+  /// (nullopt: only known after, as for a maximal Poisson-disk set).
+  std::function<std::optional<std::uint64_t>(const SamplerRequest&)> count;
+  /// Fills a validated request's points.
+  std::function<PointSet(const SamplerRequest&)> generate;
+};
+
+/// Every randomizer name with a one-line description.
+const std::vector<std::pair<std::string, std::string>>& randomizers();
+
+/// Every sampler, in a stable order.
+const std::vector<SamplerInfo>& samplers();
+
+/// The sampler called `name`; throws invalid_argument listing the valid names.
+const SamplerInfo& find_sampler(std::string_view name);
+
+/// Validates a request (common checks, then the sampler's own) and throws
+/// stratum::invalid_argument naming what is wrong; returns the resolved
+/// randomizer name.
+std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& request);
+
+/// Validates, then generates. The one entry point the faces call.
+PointSet generate_points(std::string_view name, const SamplerRequest& request);
+
+/// Largest number of coordinates (n × d) stratum will allocate: half the
+/// physical memory, in doubles.
+std::uint64_t max_coordinates();
+
+}  // namespace stratum

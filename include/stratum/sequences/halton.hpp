@@ -1,0 +1,63 @@
+#pragma once
+/// Halton points (φ2(i), φ3(i), φ5(i), …): the radical inverse in the
+/// d-th prime base for dimension d (Halton 1960). Sequential, with star
+/// discrepancy O(log^d N / N).
+#include <cstddef>
+#include <cstdint>
+
+#include "stratum/sequences/radical_inverse.hpp"
+#include "stratum/util/primes.hpp"
+
+namespace stratum {
+
+class Halton {
+ public:
+  /// Highest dimension count: one prime base per dimension.
+  static constexpr unsigned max_dimensions = static_cast<unsigned>(prime_count);
+
+  explicit Halton(unsigned dimensions) : dimensions_(dimensions) {
+    require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
+            "Halton supports 1 to 1024 dimensions (one prime base each)");
+  }
+  unsigned dimensions() const noexcept { return dimensions_; }
+  /// Base of dimension `dim` (the dim-th prime).
+  static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim); }
+
+  template <class Real = double>
+  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+    return radical_inverse_as<Real>(base(dim), index);
+  }
+
+ private:
+  unsigned dimensions_;
+};
+
+/// Hammersley points (i/N, φ2(i), φ3(i), φ5(i), …) for a fixed N
+/// (Hammersley 1964): star discrepancy O(log^(d-1) N / N), one log better
+/// than Halton, at the price of fixing N in advance.
+class Hammersley {
+ public:
+  static constexpr unsigned max_dimensions = static_cast<unsigned>(prime_count) + 1;
+
+  Hammersley(std::uint64_t count, unsigned dimensions) : count_(count), dimensions_(dimensions) {
+    require(count >= 1, "n", count, "Hammersley needs at least one point");
+    require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
+            "Hammersley supports 1 to 1025 dimensions");
+  }
+  std::uint64_t count() const noexcept { return count_; }
+  unsigned dimensions() const noexcept { return dimensions_; }
+  /// Base of dimension dim ≥ 1 (dimension 0 is i/N).
+  static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim - 1); }
+
+  template <class Real = double>
+  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+    if (dim == 0) return to_unit<Real>(static_cast<double>(index) / static_cast<double>(count_));
+    return radical_inverse_as<Real>(base(dim), index);
+  }
+
+ private:
+  std::uint64_t count_;
+  unsigned dimensions_;
+};
+
+}  // namespace stratum

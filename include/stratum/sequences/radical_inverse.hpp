@@ -1,0 +1,43 @@
+#pragma once
+/// Radical inverse φ_b(i): the base-b digits of i mirrored about the radix
+/// point (i = 4 = 100₂ gives 0.001₂ = 1/8). Van der Corput (1935) for b = 2;
+/// the building block of Halton (1960) and Hammersley (1964) points.
+#include <cstdint>
+
+#include "stratum/util/bits.hpp"
+#include "stratum/util/error.hpp"
+#include "stratum/util/real.hpp"
+
+namespace stratum {
+
+/// φ_b(index) in double precision, for any base ≥ 2 and any 64-bit index.
+/// Digits are accumulated as an integer and divided once, so the result is
+/// the correctly rounded value of the truncated expansion; digits below
+/// b^-k with b^k ≥ 2^63 are dropped (they are below double resolution).
+constexpr double radical_inverse(std::uint32_t base, std::uint64_t index) noexcept {
+  if (base == 2) return static_cast<double>(reverse_bits64(index) >> 11) * 0x1.0p-53;
+  const std::uint64_t limit = (std::uint64_t{1} << 63) / base;
+  std::uint64_t reversed = 0;
+  std::uint64_t power = 1;
+  while (index != 0 && power <= limit) {
+    const std::uint64_t next = index / base;
+    reversed = reversed * base + (index - next * base);
+    power *= base;
+    index = next;
+  }
+  const double value = static_cast<double>(reversed) / static_cast<double>(power);
+  return value < one_minus_epsilon_double ? value : one_minus_epsilon_double;
+}
+
+/// φ_b(index) for the caller's precision (double or float).
+template <class Real>
+constexpr Real radical_inverse_as(std::uint32_t base, std::uint64_t index) noexcept {
+  return to_unit<Real>(radical_inverse(base, index));
+}
+
+/// Validates a radical-inverse base (used by constructors and the registry).
+inline void require_valid_base(std::uint64_t base) {
+  require(base >= 2 && base <= 0xffffffffu, "base", base, "a base must be an integer in [2, 2^32)");
+}
+
+}  // namespace stratum

@@ -1,0 +1,21 @@
+#pragma once
+/// Bit manipulation used by base-2 sequences and scramblers.
+#include <bit>
+#include <cstdint>
+
+namespace stratum {
+
+constexpr std::uint32_t reverse_bits32(std::uint32_t v) noexcept {
+  v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+  v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+  v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+  v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+  return (v >> 16) | (v << 16);
+}
+
+constexpr std::uint64_t reverse_bits64(std::uint64_t v) noexcept {
+  return (static_cast<std::uint64_t>(reverse_bits32(static_cast<std::uint32_t>(v))) << 32) |
+         reverse_bits32(static_cast<std::uint32_t>(v >> 32));
+}
+
+}  // namespace stratum

@@ -1,0 +1,60 @@
+#pragma once
+/// Counter-based randomness: every random number is a pure function of
+/// (seed, counters), so results never depend on call order or thread count.
+/// The mixer is the finalizer of SplitMix64 (Steele, Lea, Flood 2014,
+/// "Fast splittable pseudorandom number generators"), which passes BigCrush
+/// when applied to a counter.
+#include <cstdint>
+
+namespace stratum {
+
+/// Bijective 64-bit mixer (SplitMix64 finalizer).
+constexpr std::uint64_t mix64(std::uint64_t x) noexcept {
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  return x;
+}
+
+/// Hash of a seed and any number of 64-bit counters.
+constexpr std::uint64_t hash64(std::uint64_t seed) noexcept { return mix64(seed + 0x9e3779b97f4a7c15ULL); }
+template <class... Rest>
+constexpr std::uint64_t hash64(std::uint64_t seed, std::uint64_t first, Rest... rest) noexcept {
+  return hash64(mix64(seed + 0x9e3779b97f4a7c15ULL) ^ (first * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL),
+                rest...);
+}
+
+/// Top 53 bits of a 64-bit word as a double in [0, 1).
+constexpr double bits_to_double(std::uint64_t bits) noexcept {
+  return static_cast<double>(bits >> 11) * 0x1.0p-53;
+}
+/// Top 24 bits of a 64-bit word as a float in [0, 1).
+constexpr float bits_to_float(std::uint64_t bits) noexcept {
+  return static_cast<float>(bits >> 40) * 0x1.0p-24f;
+}
+
+/// Uniform value in [0, 1) for (seed, counters).
+template <class Real = double, class... Counters>
+constexpr Real uniform01(std::uint64_t seed, Counters... counters) noexcept {
+  const std::uint64_t bits = hash64(seed, static_cast<std::uint64_t>(counters)...);
+  if constexpr (sizeof(Real) == sizeof(float)) return bits_to_float(bits);
+  else return bits_to_double(bits);
+}
+
+/// Unbiased integer in [0, bound) for (seed, counters): Lemire's multiply-shift
+/// with rejection (Lemire 2019, "Fast random integer generation in an interval"),
+/// drawing further words from the same counter stream when it rejects.
+template <class... Counters>
+constexpr std::uint64_t uniform_below(std::uint64_t bound, std::uint64_t seed, Counters... counters) noexcept {
+  const std::uint64_t key = hash64(seed, static_cast<std::uint64_t>(counters)...);
+  const std::uint64_t threshold = (0 - bound) % bound;
+  for (std::uint64_t attempt = 0;; ++attempt) {
+    const std::uint64_t word = hash64(key, attempt);
+    const unsigned __int128 product = static_cast<unsigned __int128>(word) * bound;
+    if (static_cast<std::uint64_t>(product) >= threshold) return static_cast<std::uint64_t>(product >> 64);
+  }
+}
+
+}  // namespace stratum

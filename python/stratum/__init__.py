@@ -1,0 +1,70 @@
+"""stratum: Monte Carlo and quasi-Monte Carlo sampling.
+
+The registry of samplers lives in C++; this package is a thin face over it:
+
+>>> import stratum
+>>> x = stratum.points("halton", 256, 2)          # numpy float64, shape (256, 2)
+>>> [s["name"] for s in stratum.samplers()][:2]
+['halton', 'hammersley']
+"""
+from __future__ import annotations
+
+import numbers
+
+from . import _stratum
+from ._stratum import InvalidArgument
+
+__all__ = ["samplers", "randomizers", "points", "InvalidArgument"]
+
+
+def samplers() -> list[dict]:
+    """Every sampler: name, kind, description, min_dim, max_dim, properties,
+    randomizers (default first), counts (which n it takes) and params."""
+    return _stratum.samplers()
+
+
+def randomizers() -> list[tuple[str, str]]:
+    """Every randomizer name with a one-line description."""
+    return _stratum.randomizers()
+
+
+def _param_text(name, value) -> str:
+    if isinstance(value, bool):
+        return "1" if value else "0"
+    if isinstance(value, (str, numbers.Number)):
+        return str(value)
+    try:
+        return ",".join(str(int(v)) for v in value)
+    except TypeError:
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be a number, a string or a list of integers") from None
+
+
+def _positive_int(name, value, allowed):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InvalidArgument(f"invalid {name} = {value!r}: {allowed}")
+    if value < 1:
+        raise InvalidArgument(f"invalid {name} = {value}: {allowed}")
+    return int(value)
+
+
+def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str | None = None,
+           radius: float | None = None, threads: int = 1, **params):
+    """Points of sampler `name` as a float64 array of shape (n, d).
+
+    randomize=None uses the sampler's documented default (first in its
+    `randomizers` list); "none" asks for the unrandomized construction.
+    n=None is allowed only with radius= for a maximal Poisson-disk set.
+    Extra keyword arguments are the sampler's parameters (see samplers()).
+    """
+    if n is not None:
+        n = _positive_int("n", n, "must be a positive integer")
+    d = _positive_int("d", d, "must be a positive integer")
+    threads = _positive_int("threads", threads, "must be a positive integer")
+    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or not 0 <= seed < 2**64:
+        raise InvalidArgument(f"invalid seed = {seed!r}: must be an integer in [0, 2^64)")
+    if d > 2**32 - 1:
+        raise InvalidArgument(f"invalid d = {d}: must be below 2^32")
+    if radius is not None:
+        radius = float(radius)
+    text = {key: _param_text(key, value) for key, value in params.items()}
+    return _stratum.points(name, n, d, int(seed), randomize or "", radius, threads, text)

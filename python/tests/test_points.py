@@ -1,0 +1,56 @@
+import numpy as np
+import pytest
+
+import stratum
+
+
+def test_samplers_lists_registry_entries():
+    names = [s["name"] for s in stratum.samplers()]
+    assert "halton" in names and "random" in names
+    assert len(names) == len(set(names))
+    for s in stratum.samplers():
+        assert s["min_dim"] <= s["max_dim"]
+        assert s["randomizers"], s["name"]
+
+
+def test_points_shape_dtype_and_values():
+    x = stratum.points("halton", 6, 3)
+    assert x.shape == (6, 3) and x.dtype == np.float64
+    assert x[5, 0] == 0.625
+    assert x[5, 1] == pytest.approx(2 / 3 + 1 / 9, abs=1e-15)
+
+
+def test_every_sampler_in_unit_cube_and_thread_invariant():
+    for s in stratum.samplers():
+        d = min(max(2, s["min_dim"]), s["max_dim"])
+        for n in (256, 1024, 4096):
+            try:
+                a = stratum.points(s["name"], n, d, seed=5)
+            except stratum.InvalidArgument:
+                continue
+            assert np.all((a >= 0) & (a < 1)), s["name"]
+            b = stratum.points(s["name"], n, d, seed=5, threads=2)
+            assert np.array_equal(a, b), s["name"]
+            break
+        else:
+            pytest.fail(f"{s['name']} accepted none of the counts tried")
+
+
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        (dict(name="nosuch", n=4), "sampler"),
+        (dict(name="halton", n=0), "n = 0"),
+        (dict(name="halton", n=-1), "n = -1"),
+        (dict(name="halton", n="ten"), "n = 'ten'"),
+        (dict(name="halton", n=4, d=0), "d = 0"),
+        (dict(name="halton", n=4, d=5000), "d = 5000"),
+        (dict(name="random", n=10**15, d=3), "memory"),
+        (dict(name="halton", n=4, randomize="shuffle"), "randomize"),
+        (dict(name="halton", n=4, bogus=1), "bogus"),
+        (dict(name="halton", n=None), "n"),
+    ],
+)
+def test_bad_input_names_the_argument(kwargs, word):
+    with pytest.raises(ValueError, match=word):
+        stratum.points(**kwargs)

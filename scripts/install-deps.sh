@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages stratum needs, when missing (run as root).
+set -euo pipefail
+packages=(cmake ninja-build g++ git libboost-dev libboost-math-dev libtbb-dev libfmt-dev nlohmann-json3-dev
+  libcli11-dev libgtest-dev libbenchmark-dev python3-dev python3-numpy python3-scipy python3-pybind11
+  pybind11-dev python3-pytest python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,105 @@
+#include "stratum/registry.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+#include "families.hpp"
+#include "stratum/util/error.hpp"
+
+namespace stratum {
+
+const std::vector<std::pair<std::string, std::string>>& randomizers() {
+  static const std::vector<std::pair<std::string, std::string>> list = {
+      {"none", "no randomization: the deterministic construction (or the pattern's own seeded randomness)"},
+      {"owen", "nested uniform scrambling (Owen 1995), exact, in the sequence's base"},
+      {"owen-hash", "hash-based Owen scrambling (Burley 2020), base 2"},
+      {"xor", "digital shift: XOR (base 2) or digit-wise addition mod b"},
+      {"lms", "random linear matrix scrambling plus digital shift (Matousek 1998; scipy's scramble=True for Sobol)"},
+      {"permute", "random digit permutations, one per digit position (Owen 2017, randomized Halton)"},
+      {"cp", "Cranley-Patterson rotation: add a random vector modulo 1 (Cranley, Patterson 1976)"},
+  };
+  return list;
+}
+
+const std::vector<SamplerInfo>& samplers() {
+  static const std::vector<SamplerInfo> all = [] {
+    std::vector<SamplerInfo> list;
+    for (auto family : {registry_families::sequences, registry_families::patterns, registry_families::spacetime}) {
+      auto part = family();
+      list.insert(list.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+    }
+    return list;
+  }();
+  return all;
+}
+
+const SamplerInfo& find_sampler(std::string_view name) {
+  const auto& all = samplers();
+  for (const auto& sampler : all)
+    if (sampler.name == name) return sampler;
+  std::string names;
+  for (const auto& sampler : all) names += (names.empty() ? "" : ", ") + sampler.name;
+  throw invalid_argument("sampler", std::string(name).empty() ? "''" : std::string(name),
+                         "valid samplers are " + names);
+}
+
+std::uint64_t max_coordinates() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return std::uint64_t{1} << 30;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 2 / sizeof(double);
+}
+
+static std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& request) {
+  if (!request.n)
+    require(sampler.n_optional && request.radius, "n", "(none)",
+            sampler.n_optional ? "give n, or radius for a maximal set" : "n is required for " + sampler.name);
+  if (request.n) require(*request.n >= 1, "n", *request.n, "must be a positive integer (" + sampler.counts + ")");
+  require(request.d >= sampler.min_dim && request.d <= sampler.max_dim, "d", request.d,
+          sampler.name + " supports d from " + std::to_string(sampler.min_dim) + " to " +
+              std::to_string(sampler.max_dim));
+  require(request.threads >= 1 && request.threads <= 1024, "threads", request.threads, "must be in [1, 1024]");
+  if (request.radius)
+    require(*request.radius > 0 && *request.radius <= 1, "radius", *request.radius, "must be in (0, 1]");
+  const std::string randomize = request.randomize.empty() ? sampler.randomizers.front() : request.randomize;
+  if (std::find(sampler.randomizers.begin(), sampler.randomizers.end(), randomize) == sampler.randomizers.end())
+    throw invalid_argument("randomize", randomize, sampler.name + " accepts " + join(sampler.randomizers));
+  for (const auto& [key, value] : request.params) {
+    const bool known = std::any_of(sampler.params.begin(), sampler.params.end(),
+                                   [&](const ParamSpec& spec) { return spec.name == key; });
+    if (!known) {
+      std::vector<std::string> names;
+      for (const auto& spec : sampler.params) names.push_back(spec.name);
+      throw invalid_argument("param", key + "=" + value,
+                             sampler.name + (names.empty() ? " takes no parameters" : " takes " + join(names)));
+    }
+  }
+  if (sampler.validate) sampler.validate(request);
+  if (const auto count = sampler.count(request)) {
+    const std::uint64_t limit = max_coordinates();
+    require(*count <= limit / request.d, "n", *count,
+            "n x d = " + std::to_string(*count) + " x " + std::to_string(request.d) +
+                " coordinates exceeds the memory limit of " + std::to_string(limit) + " coordinates");
+  }
+  return randomize;
+}
+
+PointSet generate_points(std::string_view name, const SamplerRequest& request) {
+  const SamplerInfo& sampler = find_sampler(name);
+  SamplerRequest resolved = request;
+  for (const auto& spec : sampler.params)
+    if (!spec.default_value.empty() && !resolved.params.count(spec.name)) resolved.params[spec.name] = spec.default_value;
+  resolved.randomize = validate_request(sampler, resolved);
+  return sampler.generate(resolved);
+}
+
+}  // namespace stratum

@@ -1,0 +1,46 @@
+#pragma once
+/// Helpers shared by the registry's sampler families: parameter parsing,
+/// point buffers and deterministic parallel filling.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stratum/registry.hpp"
+
+namespace stratum::registry_support {
+
+/// A request's parameter as text (generate_points has filled in defaults).
+std::optional<std::string> param_text(const SamplerRequest& request, const std::string& name);
+/// Integer parameter (throws naming the parameter when not an integer).
+std::optional<std::int64_t> param_int(const SamplerRequest& request, const std::string& name);
+/// Boolean parameter: 1/0, true/false, yes/no.
+bool param_bool(const SamplerRequest& request, const std::string& name, bool fallback);
+/// Comma-separated list of integers ("1,55,133").
+std::optional<std::vector<std::int64_t>> param_int_list(const SamplerRequest& request, const std::string& name);
+
+/// An uninitialized n × d buffer.
+PointSet allocate_points(std::size_t n, std::size_t d);
+
+/// Calls fill(begin, end) over [0, n) in fixed chunks on `threads` threads
+/// (oneTBB). Results are identical for any thread count as long as each row
+/// depends only on its index.
+void parallel_rows(std::uint64_t n, unsigned threads, const std::function<void(std::uint64_t, std::uint64_t)>& fill);
+
+/// Fills an n × d PointSet from an index-addressable sample(index, dim).
+template <class SampleFn>
+PointSet fill_index_addressable(std::uint64_t n, unsigned d, unsigned threads, const SampleFn& sample) {
+  PointSet points = allocate_points(n, d);
+  double* out = points.data.get();
+  parallel_rows(n, threads, [&](std::uint64_t begin, std::uint64_t end) {
+    for (std::uint64_t i = begin; i < end; ++i)
+      for (unsigned j = 0; j < d; ++j) out[i * d + j] = sample(i, j);
+  });
+  return points;
+}
+
+/// n is a power of two?
+constexpr bool is_power_of_two(std::uint64_t n) { return n != 0 && (n & (n - 1)) == 0; }
+
+}  // namespace stratum::registry_support

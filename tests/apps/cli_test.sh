@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# CLI tests: output shapes, formats and the bad-input contract (message naming
+# the argument, non-zero exit, no partial output file).
+set -u
+stratum=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+ok() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+expect_error() {  # expect_error WORD args...: non-zero exit and WORD in stderr
+  local word=$1; shift
+  if "$stratum" "$@" >"$tmp/out" 2>"$tmp/err"; then fail "'$*' succeeded"; return; fi
+  grep -q -- "$word" "$tmp/err" && ok || fail "'$*' stderr lacks '$word': $(cat "$tmp/err")"
+}
+
+"$stratum" samplers | grep -q '^halton ' && ok || fail "samplers lists halton"
+"$stratum" samplers --json | /usr/bin/python3 -c 'import json,sys; d=json.load(sys.stdin); assert any(s["name"]=="halton" for s in d["samplers"])' && ok || fail "samplers --json"
+
+lines=$("$stratum" points --sampler halton -n 100 -d 3 | wc -l)
+[ "$lines" = 100 ] && ok || fail "points prints 100 lines, got $lines"
+fields=$("$stratum" points --sampler halton -n 5 -d 3 | head -1 | wc -w)
+[ "$fields" = 3 ] && ok || fail "points prints 3 columns, got $fields"
+first=$("$stratum" points --sampler halton -n 6 -d 1 | sed -n 6p)
+[ "$first" = 0.625 ] && ok || fail "halton point 5 is 0.625, got $first"
+
+"$stratum" points --sampler halton -n 64 -d 2 --format npy -o "$tmp/p.npy" && ok || fail "npy write"
+/usr/bin/python3 -c "import numpy,sys; a=numpy.load('$tmp/p.npy'); assert a.shape==(64,2), a.shape" && ok || fail "npy shape"
+"$stratum" points --sampler halton -n 64 -d 2 --format csv -o "$tmp/p.csv" && ok || fail "csv write"
+[ "$(head -1 "$tmp/p.csv")" = "0,0" ] && ok || fail "csv first row"
+
+a=$("$stratum" points --sampler random -n 20000 -d 4 --seed 3 --threads 1 | md5sum)
+b=$("$stratum" points --sampler random -n 20000 -d 4 --seed 3 --threads 2 | md5sum)
+[ "$a" = "$b" ] && ok || fail "threads change the output"
+
+expect_error "sampler" points --sampler nosuch -n 4
+expect_error "halton" points --sampler nosuch -n 4
+expect_error "invalid n = 0" points --sampler halton -n 0
+expect_error "invalid n = -3" points --sampler halton -n -3
+expect_error "-n" points --sampler halton -n abc
+expect_error "invalid d = 0" points --sampler halton -n 4 -d 0
+expect_error "invalid d = 2000" points --sampler halton -n 4 -d 2000
+expect_error "memory" points --sampler random -n 1000000000000000 -d 3
+expect_error "format" points --sampler halton -n 4 --format xls
+expect_error "randomize" points --sampler halton -n 4 --randomize shuffle
+expect_error "output" points --sampler halton -n 4 -o /nonexistent/x.txt
+[ ! -e /nonexistent/x.txt ] && ok || fail "partial file left"
+[ "$(id -u)" != 0 ] && chmod 555 "$tmp" && { expect_error "output" points --sampler halton -n 4 -o "$tmp/ro.txt"; chmod 755 "$tmp"; }
+[ -z "$(ls -A "$tmp" | grep -v -e '^out$' -e '^err$' -e '^p\.')" ] && ok || fail "stray files: $(ls -A "$tmp")"
+
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]
