@@ -18,6 +18,7 @@ struct PointsOptions {
   std::optional<std::int64_t> n;
   std::int64_t d = 2;
   std::uint64_t seed = 0;
+  std::uint64_t start = 0;
   std::string randomize;
   std::optional<double> radius;
   std::int64_t threads = 1;
@@ -37,6 +38,7 @@ void run_points(const PointsOptions& options) {
   require(options.threads >= 1 && options.threads <= 1024, "threads", options.threads, "must be in [1, 1024]");
   request.d = static_cast<unsigned>(options.d);
   request.seed = options.seed;
+  request.start = options.start;
   request.randomize = options.randomize;
   request.radius = options.radius;
   request.threads = static_cast<unsigned>(options.threads);
@@ -65,6 +67,7 @@ void add_points_command(CLI::App& app) {
   command->add_option("-n", options->n, "number of points (leave out for a maximal Poisson-disk set with --radius)");
   command->add_option("-d", options->d, "dimensions")->capture_default_str();
   command->add_option("--seed", options->seed, "seed of the randomization")->capture_default_str();
+  command->add_option("--start", options->start, "index of the first point (sequences only)")->capture_default_str();
   command->add_option("--randomize", options->randomize,
                       "none|owen|owen-hash|xor|lms|permute|cp (default: the sampler's own)");
   command->add_option("--radius", options->radius, "Poisson-disk radius");

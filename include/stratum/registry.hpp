@@ -28,6 +28,7 @@ struct SamplerRequest {
   std::optional<std::uint64_t> n;  ///< absent only where a sampler can choose (maximal Poisson disk)
   unsigned d = 2;
   std::uint64_t seed = 0;
+  std::uint64_t start = 0;         ///< index of the first point (sequences only; scipy's fast_forward)
   std::string randomize;           ///< empty: the sampler's default
   std::optional<double> radius;    ///< Poisson disk and friends
   unsigned threads = 1;

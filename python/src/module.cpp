@@ -34,12 +34,13 @@ py::list sampler_list() {
 }
 
 py::array_t<double> points(const std::string& name, std::optional<std::uint64_t> n, unsigned d, std::uint64_t seed,
-                           const std::string& randomize, std::optional<double> radius, unsigned threads,
+                           std::uint64_t start, const std::string& randomize, std::optional<double> radius, unsigned threads,
                            const std::map<std::string, std::string>& params) {
   stratum::SamplerRequest request;
   request.n = n;
   request.d = d;
   request.seed = seed;
+  request.start = start;
   request.randomize = randomize;
   request.radius = radius;
   request.threads = threads;
@@ -59,7 +60,7 @@ PYBIND11_MODULE(_stratum, m) {
   py::register_exception<stratum::invalid_argument>(m, "InvalidArgument", PyExc_ValueError);
   m.def("samplers", &sampler_list, "Every registry sampler as a dict");
   m.def("randomizers", [] { return stratum::randomizers(); }, "Every randomizer (name, description)");
-  m.def("points", &points, py::arg("name"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("randomize"),
+  m.def("points", &points, py::arg("name"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("start"), py::arg("randomize"),
         py::arg("radius"), py::arg("threads"), py::arg("params"));
   m.def("max_coordinates", &stratum::max_coordinates);
 }

@@ -48,12 +48,13 @@ def _positive_int(name, value, allowed):
 
 
 def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str | None = None,
-           radius: float | None = None, threads: int = 1, **params):
+           radius: float | None = None, threads: int = 1, start: int = 0, **params):
     """Points of sampler `name` as a float64 array of shape (n, d).
 
     randomize=None uses the sampler's documented default (first in its
     `randomizers` list); "none" asks for the unrandomized construction.
-    n=None is allowed only with radius= for a maximal Poisson-disk set.
+    start is the index of the first point (sequences only, like scipy's
+    fast_forward). n=None is allowed only with radius= for a maximal Poisson-disk set.
     Extra keyword arguments are the sampler's parameters (see samplers()).
     """
     if n is not None:
@@ -67,4 +68,6 @@ def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str |
     if radius is not None:
         radius = float(radius)
     text = {key: _param_text(key, value) for key, value in params.items()}
-    return _stratum.points(name, n, d, int(seed), randomize or "", radius, threads, text)
+    if isinstance(start, bool) or not isinstance(start, numbers.Integral) or not 0 <= start < 2**64:
+        raise InvalidArgument(f"invalid start = {start!r}: must be an integer in [0, 2^64)")
+    return _stratum.points(name, n, d, int(seed), int(start), randomize or "", radius, threads, text)

@@ -27,7 +27,8 @@ const std::vector<std::pair<std::string, std::string>>& randomizers() {
 const std::vector<SamplerInfo>& samplers() {
   static const std::vector<SamplerInfo> all = [] {
     std::vector<SamplerInfo> list;
-    for (auto family : {registry_families::sequences, registry_families::patterns, registry_families::spacetime}) {
+    namespace f = registry_families;
+    for (auto family : {f::sequences, f::sobol, f::pmj, f::lattices, f::patterns, f::poisson, f::spacetime}) {
       auto part = family();
       list.insert(list.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
     }
@@ -70,6 +71,11 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   require(request.threads >= 1 && request.threads <= 1024, "threads", request.threads, "must be in [1, 1024]");
   if (request.radius)
     require(*request.radius > 0 && *request.radius <= 1, "radius", *request.radius, "must be in (0, 1]");
+  if (request.start != 0)
+    require(sampler.kind == "sequence", "start", request.start,
+            sampler.name + " is a finite pattern; only sequences can start past index 0");
+  if (request.n)
+    require(request.start <= ~std::uint64_t{0} - *request.n, "start", request.start, "start + n must fit in 64 bits");
   const std::string randomize = request.randomize.empty() ? sampler.randomizers.front() : request.randomize;
   if (std::find(sampler.randomizers.begin(), sampler.randomizers.end(), randomize) == sampler.randomizers.end())
     throw invalid_argument("randomize", randomize, sampler.name + " accepts " + join(sampler.randomizers));

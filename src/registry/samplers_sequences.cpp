@@ -27,8 +27,9 @@ std::vector<SamplerInfo> sequences() {
       .generate =
           [](const SamplerRequest& request) {
             const Halton halton(request.d);
-            return fill_index_addressable(*request.n, request.d, request.threads,
-                                          [&](std::uint64_t i, unsigned j) { return halton.sample(i, j); });
+            return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
+              return halton.sample(request.start + i, j);
+            });
           },
   });
 
