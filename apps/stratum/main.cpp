@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
   stratum::cli::add_points_command(app);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ConversionError& e) {
+    fmt::print(stderr, "stratum: error: {}: not a valid number for this option (see --help)\n", e.what());
+    return 2;
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const stratum::invalid_argument& e) {

@@ -38,7 +38,7 @@ expect_error "sampler" points --sampler nosuch -n 4
 expect_error "halton" points --sampler nosuch -n 4
 expect_error "invalid n = 0" points --sampler halton -n 0
 expect_error "invalid n = -3" points --sampler halton -n -3
-expect_error "-n" points --sampler halton -n abc
+expect_error "-n = abc: not a valid number" points --sampler halton -n abc
 expect_error "invalid d = 0" points --sampler halton -n 4 -d 0
 expect_error "invalid d = 2000" points --sampler halton -n 4 -d 2000
 expect_error "memory" points --sampler random -n 1000000000000000 -d 3
