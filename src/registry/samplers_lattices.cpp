@@ -1,9 +1,171 @@
-/// Registry entries: rank-1 lattices.
+/// Registry entries: rank-1 lattices (fibonacci, lattice).
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+
+#include <charconv>
+#include <cmath>
+
 #include "families.hpp"
+#include "stratum/randomizers/cranley_patterson.hpp"
+#include "stratum/sequences/lattice.hpp"
+#include "stratum/util/error.hpp"
 #include "support.hpp"
 
 namespace stratum::registry_families {
 
-std::vector<SamplerInfo> lattices() { return {}; }
+using namespace registry_support;
+
+namespace {
+
+std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
+
+/// Korobov search limit: n x d point-coordinates per candidate.
+constexpr std::uint64_t search_limit = std::uint64_t{1} << 26;
+
+double param_gamma(const SamplerRequest& request) {
+  const auto text = param_text(request, "gamma");
+  if (!text) return 1.0;
+  double value = 0;
+  const char* end = text->data() + text->size();
+  const auto [ptr, ec] = std::from_chars(text->data(), end, value);
+  if (ec != std::errc() || ptr != end || !(value > 0 && value <= 1))
+    throw invalid_argument("gamma", text->empty() ? "''" : *text, "must be a number in (0, 1]");
+  return value;
+}
+
+/// The generating vector a request asks for, or nullopt when it asks for the
+/// search (no generator=, no a=). Throws invalid_argument naming the param.
+std::optional<std::array<std::uint64_t, Rank1Lattice::max_dimensions>> explicit_generator(
+    const SamplerRequest& request) {
+  const auto generator = param_int_list(request, "generator");
+  const auto a = param_int(request, "a");
+  const std::uint64_t n = *request.n;
+  if (generator && a)
+    throw invalid_argument("generator", *param_text(request, "generator"), "give generator= or a=, not both");
+  if (generator) {
+    require(generator->size() == request.d, "generator", *param_text(request, "generator"),
+            "has " + std::to_string(generator->size()) + " entries; d = " + std::to_string(request.d) + " needs " +
+                std::to_string(request.d));
+    std::array<std::uint64_t, Rank1Lattice::max_dimensions> z{};
+    for (std::size_t j = 0; j < generator->size(); ++j) {
+      const std::int64_t value = (*generator)[j];
+      require(value >= 1 && static_cast<std::uint64_t>(value) < std::max<std::uint64_t>(n, 2), "generator",
+              "entry " + std::to_string(j) + " = " + std::to_string(value),
+              "entries must be in [1, n) = [1, " + std::to_string(n) + ")");
+      z[j] = static_cast<std::uint64_t>(value);
+    }
+    return z;
+  }
+  if (a) {
+    require(*a >= 1, "a", *a, "the Korobov parameter must be in [1, n) = [1, " + std::to_string(n) + ") and coprime to n");
+    return korobov_generator(n, static_cast<std::uint64_t>(*a), request.d);
+  }
+  return std::nullopt;
+}
+
+/// The best Korobov parameter, candidates scored in parallel (each score
+/// depends only on its candidate, so the result is the same on any number
+/// of threads).
+std::uint64_t search_korobov(std::uint64_t n, unsigned d, double gamma, unsigned threads) {
+  const KorobovSearch search(n, d, gamma);
+  const std::uint64_t count = search.candidate_count();
+  std::vector<std::uint64_t> parameters(count);
+  std::vector<double> scores(count);
+  for (std::uint64_t t = 0; t < count; ++t) parameters[t] = search.candidate(t);
+  const auto score_range = [&](std::uint64_t begin, std::uint64_t end) {
+    for (std::uint64_t t = begin; t < end; ++t) scores[t] = search.score(parameters[t]);
+  };
+  if (threads <= 1 || count == 1) {
+    score_range(0, count);
+  } else {
+    oneapi::tbb::task_arena arena(static_cast<int>(threads));
+    arena.execute([&] {
+      oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::uint64_t>(0, count, 1),
+                                [&](const auto& range) { score_range(range.begin(), range.end()); });
+    });
+  }
+  return parameters[KorobovSearch::best_of(scores, parameters)];
+}
+
+PointSet fill_lattice(const Rank1Lattice& lattice, const SamplerRequest& request) {
+  const bool rotate = request.randomize == "cp";
+  const CranleyPattersonRotation rotation(request.seed);
+  return fill_index_addressable(lattice.count(), lattice.dimensions(), request.threads,
+                                [&](std::uint64_t i, unsigned j) {
+                                  const double value = lattice.sample(i, j);
+                                  return rotate ? rotation(value, j) : value;
+                                });
+}
+
+std::string nearby_fibonacci(std::uint64_t n) {
+  unsigned k = 2;
+  while (k < 93 && fibonacci_number(k + 1) < n) ++k;
+  return std::to_string(fibonacci_number(k)) + " or " + std::to_string(fibonacci_number(k + 1));
+}
+
+}  // namespace
+
+std::vector<SamplerInfo> lattices() {
+  std::vector<SamplerInfo> list;
+
+  list.push_back({
+      .name = "fibonacci",
+      .kind = "pattern",
+      .description = "Fibonacci lattice: n = F_k points frac(i (1, F_{k-1}) / n) (Zaremba 1966; Sloan, Joe 1994); "
+                     "for other n the golden-ratio lattice (1, g), g the integer nearest n/phi coprime to n",
+      .min_dim = 2,
+      .max_dim = 2,
+      .properties = {"rank-1 lattice", "Latin (one point per row and column)"},
+      .randomizers = {"none", "cp"},
+      .counts = "any n >= 1: the classic Fibonacci lattice for n = 1, 2, 3, 5, 8, 13, ..., 987, 1597, ...; "
+                "strict=1 accepts only those",
+      .params = {{"strict", "1: accept only Fibonacci numbers n (the classic construction)", "0"}},
+      .validate =
+          [](const SamplerRequest& request) {
+            if (param_bool(request, "strict", false))
+              require(fibonacci_index(*request.n) != 0, "n", *request.n,
+                      "with strict=1 n must be a Fibonacci number (1, 2, 3, 5, 8, 13, 21, ...; nearest: " +
+                          nearby_fibonacci(*request.n) + ")");
+          },
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_lattice(fibonacci_lattice(*request.n), request); },
+  });
+
+  list.push_back({
+      .name = "lattice",
+      .kind = "pattern",
+      .description = "rank-1 lattice frac(i z / n) (Korobov 1959; Sloan, Joe 1994): z from generator=, or "
+                     "Korobov's (1, a, a^2, ...) mod n from a=, or else the Korobov a minimizing the worst-case "
+                     "error in the weighted Korobov space (alpha = 2, weights gamma^j; P_2 of Sloan, Joe 1994)",
+      .min_dim = 1,
+      .max_dim = Rank1Lattice::max_dimensions,
+      .properties = {"rank-1 lattice", "Latin in every coordinate with gcd(z_j, n) = 1 (always for a= and the search)"},
+      .randomizers = {"none", "cp"},
+      .counts = "any n >= 1; the Korobov search (no generator=, no a=) takes n x d <= 2^26",
+      .params = {{"generator", "generating vector z: d comma-separated integers in [1, n)", ""},
+                 {"a", "Korobov parameter in [1, n), coprime to n: z = (1, a, a^2, ...) mod n", ""},
+                 {"gamma", "product-weight decay of the search criterion, gamma_j = gamma^j, in (0, 1]", "1"}},
+      .validate =
+          [](const SamplerRequest& request) {
+            param_gamma(request);
+            if (!explicit_generator(request))
+              require(*request.n <= search_limit / request.d, "n", *request.n,
+                      "the Korobov search takes n x d <= 2^26 (here d = " + std::to_string(request.d) +
+                          "); give a= or generator= for larger lattices");
+          },
+      .count = requested_count,
+      .generate =
+          [](const SamplerRequest& request) {
+            const std::uint64_t n = *request.n;
+            auto z = explicit_generator(request);
+            if (!z) z = korobov_generator(n, search_korobov(n, request.d, param_gamma(request), request.threads), request.d);
+            const Rank1Lattice lattice(n, std::span<const std::uint64_t>(z->data(), request.d));
+            return fill_lattice(lattice, request);
+          },
+  });
+
+  return list;
+}
 
 }  // namespace stratum::registry_families
