@@ -14,7 +14,16 @@ import numbers
 from . import _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["samplers", "randomizers", "points", "InvalidArgument"]
+__all__ = ["samplers", "randomizers", "points", "InvalidArgument", "qmc"]
+
+
+def __getattr__(name):
+    # stratum.qmc imports scipy: load it on first use, not with the package.
+    if name == "qmc":
+        import importlib
+
+        return importlib.import_module(".qmc", __name__)
+    raise AttributeError(f"module 'stratum' has no attribute {name!r}")
 
 
 def samplers() -> list[dict]:

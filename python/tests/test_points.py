@@ -14,7 +14,7 @@ def test_samplers_lists_registry_entries():
 
 
 def test_points_shape_dtype_and_values():
-    x = stratum.points("halton", 6, 3)
+    x = stratum.points("halton", 6, 3, randomize="none")
     assert x.shape == (6, 3) and x.dtype == np.float64
     assert x[5, 0] == 0.625
     assert x[5, 1] == pytest.approx(2 / 3 + 1 / 9, abs=1e-15)

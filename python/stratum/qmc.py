@@ -1,0 +1,432 @@
+"""scipy-compatible quasi-Monte Carlo engines whose points come from stratum.
+
+``stratum.qmc.Sobol``, ``Halton``, ``LatinHypercube`` and ``PoissonDisk`` are
+subclasses of ``scipy.stats.qmc.QMCEngine`` with scipy's constructor arguments
+and methods, so existing code switches by changing one import:
+
+>>> from stratum import qmc                       # was: from scipy.stats import qmc
+>>> x = qmc.Sobol(d=2, scramble=False).random_base2(m=3)
+>>> qmc.discrepancy(x)                            # scipy's own functions are re-exported
+0.013882107204860938
+
+The constructions follow scipy's definitions (Sobol' with Joe-Kuo direction
+numbers scrambled by LMS + digital shift, Halton scrambled by random digit
+permutations, Latin hypercube, Bridson's Poisson disk), but the random streams
+are stratum's counter-based ones: for the same seed the values differ from
+scipy's. Unscrambled Sobol' and Halton points are identical to scipy's.
+Every difference is listed in docs/python-qmc.md.
+"""
+from __future__ import annotations
+
+import copy
+import inspect
+import numbers
+import os
+import warnings
+
+import numpy as np
+from scipy.stats import qmc as _scipy_qmc
+
+from . import InvalidArgument
+from . import points as _points
+from . import samplers as _samplers
+
+QMCEngine = _scipy_qmc.QMCEngine
+
+# scipy's other public names (scale, discrepancy, MultivariateNormalQMC, ...)
+# so that `from stratum import qmc` replaces `from scipy.stats import qmc`.
+_OWN = ("Sobol", "Halton", "LatinHypercube", "PoissonDisk")
+_REEXPORTED = [name for name in getattr(_scipy_qmc, "__all__", dir(_scipy_qmc))
+               if not name.startswith("_") and name not in _OWN and hasattr(_scipy_qmc, name)]
+globals().update({name: getattr(_scipy_qmc, name) for name in _REEXPORTED})
+__all__ = sorted(set(_OWN) | set(_REEXPORTED) | {"QMCEngine"})
+
+_MASK64 = (1 << 64) - 1
+_MAX_THREADS = 1024
+_OPTIMIZATIONS = ("random-cd", "lloyd")
+# scipy <= 1.14 names the random-state argument `seed`, newer scipy `rng`.
+_BASE_SEED_KEYWORD = "rng" if "rng" in inspect.signature(QMCEngine.__init__).parameters else "seed"
+
+
+def _invalid(name, value, allowed):
+    return InvalidArgument(f"invalid {name} = {value!r}: {allowed}")
+
+
+def _integer(name, value, minimum=0, maximum=None, allowed=None):
+    """An int (Python or numpy, not bool) in [minimum, maximum]."""
+    if allowed is None:
+        allowed = f"must be an integer >= {minimum}" if maximum is None else f"must be an integer in [{minimum}, {maximum}]"
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, np.integer)):
+        raise _invalid(name, value, allowed)
+    value = int(value)
+    if value < minimum or (maximum is not None and value > maximum):
+        raise _invalid(name, value, allowed)
+    return value
+
+
+def _flag(name, value):
+    """A bool (or numpy bool, or the integers 0 and 1)."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (numbers.Integral, np.integer)) and value in (0, 1):
+        return bool(value)
+    raise _invalid(name, value, "must be True or False")
+
+
+def _sampler(name):
+    for info in _samplers():
+        if info["name"] == name:
+            return info
+    raise NotImplementedError(f"this stratum build has no registry sampler {name!r}; "
+                              f"stratum.qmc needs it (see stratum.samplers())")
+
+
+def _threads(workers):
+    """scipy's `workers` (-1: every CPU) as a stratum thread count."""
+    if isinstance(workers, (bool, np.bool_)) or not isinstance(workers, (numbers.Integral, np.integer)):
+        raise _invalid("workers", workers, "must be -1 (every CPU) or a positive integer")
+    workers = int(workers)
+    if workers == -1:
+        workers = os.cpu_count() or 1
+    elif workers < 1:
+        raise _invalid("workers", workers, "must be -1 (every CPU) or a positive integer")
+    return min(workers, _MAX_THREADS)
+
+
+def _mix(seed, counter):
+    """A 64-bit seed for the counter-th draw of an engine (splitmix64 finalizer)."""
+    z = (seed + (counter + 1) * 0x9E3779B97F4A7C15) & _MASK64
+    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9) & _MASK64
+    z = ((z ^ (z >> 27)) * 0x94D049BB133111EB) & _MASK64
+    return z ^ (z >> 31)
+
+
+def _is_generator(seed):
+    return isinstance(seed, (np.random.Generator, np.random.RandomState))
+
+
+def _draw_seed(generator):
+    """One uniform 64-bit integer from a numpy Generator or RandomState."""
+    if isinstance(generator, np.random.Generator):
+        return int(generator.integers(0, 1 << 64, dtype=np.uint64))
+    return int(generator.randint(0, 1 << 64, dtype=np.uint64))
+
+
+def _resolve_seed(seed, rng):
+    """scipy's seed (<= 1.14) or rng (newer) argument; both may not be given."""
+    if rng is not None:
+        if seed is not None:
+            raise InvalidArgument("invalid seed and rng: give one of them (rng is the newer scipy name of seed)")
+        seed = rng
+    if seed is None or _is_generator(seed):
+        return seed
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (numbers.Integral, np.integer)) or seed < 0:
+        raise _invalid("seed", seed, "must be None, a non-negative integer or a numpy.random.Generator")
+    return int(seed)
+
+
+def _optimization(value):
+    if value is None:
+        return None
+    if isinstance(value, str) and value.lower() in _OPTIMIZATIONS:
+        return value.lower()
+    raise _invalid("optimization", value, "must be None, 'random-cd' or 'lloyd'")
+
+
+def _sample_count(n):
+    return _integer("n", n, 0, allowed="must be a non-negative integer")
+
+
+class _Engine(QMCEngine):
+    """What the four engines share: seeds, counting, optimization, integers."""
+
+    _registry_name = ""
+
+    def _check_d(self, d):
+        info = _sampler(self._registry_name)
+        return _integer("d", d, info["min_dim"], info["max_dim"],
+                        f"{self._registry_name} supports d from {info['min_dim']} to {info['max_dim']}")
+
+    def _setup(self, d, *, optimization, seed, rng):
+        d = self._check_d(d)
+        optimization = _optimization(optimization)
+        seed = _resolve_seed(seed, rng)
+        self._seed_argument = copy.deepcopy(seed)
+        QMCEngine.__init__(self, d=d, optimization=optimization, **{_BASE_SEED_KEYWORD: seed})
+        # The stratum seed: an integer seed is used as is (reduced to 64 bits
+        # by numpy's SeedSequence when larger), a Generator gives one draw,
+        # None gives fresh entropy (through the fresh Generator scipy made).
+        if seed is None or _is_generator(seed):
+            self._stratum_seed = _draw_seed(self.rng)
+        elif seed <= _MASK64:
+            self._stratum_seed = seed
+        else:
+            self._stratum_seed = int(np.random.SeedSequence(seed).generate_state(1, np.uint64)[0])
+        self._optimization_name = optimization
+
+    @property
+    def stratum_seed(self):
+        """The 64-bit seed handed to stratum's registry."""
+        return self._stratum_seed
+
+    def random(self, n=1, *, workers=1):
+        """Draw `n` points in the half-open interval ``[0, 1)``.
+
+        `workers` (-1: every CPU) is the number of threads; the values do not
+        depend on it."""
+        n = _sample_count(n)
+        threads = _threads(workers)
+        sample = self._random(n, workers=threads) if n else np.empty((0, self.d))
+        if self.optimization_method is not None and len(sample) > 1:
+            sample = self.optimization_method(sample)
+        self.num_generated += len(sample)
+        return sample
+
+    def integers(self, l_bounds, *, u_bounds=None, n=1, endpoint=False, workers=1):
+        """Draw `n` integers from `l_bounds` (inclusive) to `u_bounds`
+        (exclusive; inclusive with endpoint=True) as floor(l + (u - l) x),
+        like scipy. With u_bounds=None the range is [0, l_bounds)."""
+        if u_bounds is None:
+            u_bounds, l_bounds = l_bounds, 0
+        lower, upper = np.atleast_1d(l_bounds), np.atleast_1d(u_bounds)
+        for name, value in (("l_bounds", lower), ("u_bounds", upper)):
+            if not np.issubdtype(value.dtype, np.integer):
+                raise _invalid(name, value.tolist(), "must be an integer or an array-like of integers")
+        if _flag("endpoint", endpoint):
+            upper = upper + 1
+        try:
+            lower, upper = np.broadcast_to(lower, self.d), np.broadcast_to(upper, self.d)
+        except ValueError:
+            raise _invalid("l_bounds", lower.tolist(), f"l_bounds and u_bounds must broadcast to d = {self.d}") from None
+        if not np.all(lower < upper):
+            raise _invalid("u_bounds", np.asarray(u_bounds).tolist(), "must be above l_bounds everywhere")
+        sample = self.random(n, workers=workers)
+        return np.floor(_scipy_qmc.scale(sample, lower, upper)).astype(np.int64)
+
+    def reset(self):
+        """Back to the state after construction: the same points again."""
+        seed = copy.deepcopy(self._seed_argument)
+        self.rng = seed if _is_generator(seed) else np.random.default_rng(seed)
+        if _is_generator(seed):
+            _draw_seed(self.rng)  # the draw that made the stratum seed, so the optimizer's stream repeats too
+        if hasattr(self, "rng_seed"):
+            self.rng_seed = copy.deepcopy(self._seed_argument)
+        self._rebuild_optimizer()
+        self.num_generated = 0
+        return self
+
+    def _rebuild_optimizer(self):
+        if self._optimization_name is None:
+            return
+        # scipy binds the optimizer to self.rng at construction; rebind it.
+        keywords = dict(getattr(self.optimization_method, "keywords", {}))
+        if "rng" in keywords:
+            keywords["rng"] = self.rng
+            self.optimization_method = type(self.optimization_method)(self.optimization_method.func, **keywords)
+
+    def fast_forward(self, n):
+        """Skip `n` points: the next draw continues as if they had been drawn."""
+        self.num_generated += _integer("n", n, 0, allowed="must be a non-negative integer")
+        return self
+
+
+class _Sequence(_Engine):
+    """An index-addressable registry sequence: point i depends only on the
+    seed and i, so the engine's position is the registry's start index."""
+
+    def _setup_sequence(self, d, randomize, scramble, scrambled_name, *, optimization, seed, rng):
+        d = self._check_d(d)
+        self.scramble = _flag("scramble", scramble)
+        accepted = _sampler(self._registry_name)["randomizers"]
+        if randomize is None:
+            randomize = scrambled_name if self.scramble else "none"
+            if randomize not in accepted:
+                raise _invalid("scramble", self.scramble, f"this build's {self._registry_name} has no {randomize!r} "
+                               "randomizer (it accepts " + ", ".join(accepted) + ")")
+        elif randomize not in accepted:
+            raise _invalid("randomize", randomize, f"{self._registry_name} accepts " + ", ".join(accepted))
+        self.randomize = randomize
+        self._setup(d, optimization=optimization, seed=seed, rng=rng)
+
+    _params = {}
+
+    def _draw(self, n, start, threads):
+        return _points(self._registry_name, n, self.d, seed=self._stratum_seed, randomize=self.randomize,
+                       start=start, threads=threads, **self._params)
+
+    def _random(self, n=1, *, workers=1):
+        return self._draw(n, self.num_generated, workers)
+
+
+class Sobol(_Sequence):
+    """Sobol' sequence (Joe-Kuo direction numbers) from stratum's registry.
+
+    Same arguments as ``scipy.stats.qmc.Sobol``: scramble=True is a linear
+    matrix scramble plus digital shift (LMS + shift); scramble=False is the
+    plain sequence, identical to scipy's. bits (default 30, as scipy) sets
+    the resolution of the output (multiples of 2**-bits) and the most points
+    the engine hands out (2**bits). `seed` (or its newer scipy name `rng`)
+    is None, an integer or a numpy Generator.
+
+    stratum extension: randomize= picks any randomizer of the "sobol" registry
+    entry ("lms", "owen", "owen-hash", "none", ...); it overrides scramble.
+    """
+
+    _registry_name = "sobol"
+    _params = {"order": "gray"}  # scipy's order: point i is C · (i XOR i/2)
+
+    class _MaxDim:
+        def __get__(self, instance, owner):
+            return _sampler("sobol")["max_dim"]
+
+    MAXDIM = _MaxDim()
+
+    def __init__(self, d, *, scramble=True, bits=None, seed=None, optimization=None, rng=None, randomize=None):
+        bits = 30 if bits is None else _integer("bits", bits, 1, 64, "must be an integer in [1, 64] (maximum supported 'bits' is 64)")
+        self.bits = bits
+        self.maxn = 2**bits
+        self._setup_sequence(d, randomize, scramble, "lms", optimization=optimization, seed=seed, rng=rng)
+        self._init_quad = {"d": self.d, "scramble": True, "bits": bits, "optimization": self._optimization_name,
+                           "randomize": None if randomize == "none" else randomize}
+
+    def _check_capacity(self, n):
+        total = self.num_generated + n
+        if total > self.maxn:
+            raise _invalid("n", n, f"at most 2**{self.bits} = {self.maxn} distinct points can be generated; "
+                           f"{self.num_generated} points have been previously generated, then: "
+                           f"n = {self.num_generated}+{n} = {total}"
+                           + (". Consider increasing `bits`." if self.bits != 64 else ""))
+
+    def random(self, n=1, *, workers=1):
+        n = _sample_count(n)
+        self._check_capacity(n)
+        if self.num_generated == 0 and n & (n - 1) != 0:
+            warnings.warn("The balance properties of Sobol' points require n to be a power of 2.", stacklevel=2)
+        return super().random(n, workers=workers)
+
+    def _random(self, n=1, *, workers=1):
+        sample = self._draw(n, self.num_generated, workers)
+        # Keep `bits` binary digits, as scipy's bits-wide generator does; for
+        # LMS and Owen scrambling this is the same scramble on `bits` digits.
+        scale = float(2**self.bits)
+        return np.floor(sample * scale) / scale
+
+    def random_base2(self, m):
+        """Draw n = 2**m points; the total drawn so far must stay a power of 2."""
+        m = _integer("m", m, 0, 64, "must be an integer in [0, 64]")
+        n = 2**m
+        total = self.num_generated + n
+        if total & (total - 1) != 0:
+            raise _invalid("m", m, "the balance properties of Sobol' points require n to be a power of 2. "
+                           f"{self.num_generated} points have been previously generated, then: "
+                           f"n={self.num_generated}+2**{m}={total}. If you still want to do this, "
+                           "the function 'Sobol.random()' can be used.")
+        return self.random(n)
+
+
+class Halton(_Sequence):
+    """Halton sequence from stratum's registry.
+
+    Same arguments as ``scipy.stats.qmc.Halton``: scramble=True applies random
+    digit permutations (Owen 2017, scipy's scrambling); scramble=False is the
+    plain sequence, identical to scipy's.
+
+    stratum extension: randomize= picks any randomizer of the "halton"
+    registry entry; it overrides scramble.
+    """
+
+    _registry_name = "halton"
+
+    def __init__(self, d, *, scramble=True, optimization=None, seed=None, rng=None, randomize=None):
+        self._setup_sequence(d, randomize, scramble, "permute", optimization=optimization, seed=seed, rng=rng)
+        self._init_quad = {"d": self.d, "scramble": True, "optimization": self._optimization_name,
+                           "randomize": None if randomize == "none" else randomize}
+
+
+class LatinHypercube(_Engine):
+    """Latin hypercube (N-rooks) designs from the registry's "n-rooks".
+
+    Same arguments as ``scipy.stats.qmc.LatinHypercube``: each random(n) is
+    a fresh design of n points, one in every [j/n, (j+1)/n) of every
+    coordinate; scramble=False (or the older centered=True) puts the points
+    at the centres of their cells. strength=2 (orthogonal-array LHS) is not
+    available.
+    """
+
+    _registry_name = "n-rooks"
+
+    def __init__(self, d, *, centered=False, scramble=True, strength=1, optimization=None, seed=None, rng=None):
+        self.scramble = _flag("scramble", scramble) and not _flag("centered", centered)
+        strength = _integer("strength", strength, 1, allowed="must be 1 (2 is scipy's orthogonal-array LHS)")
+        if strength == 2:
+            raise NotImplementedError("LatinHypercube(strength=2), the orthogonal-array based LHS, is not "
+                                      "available in stratum; use scipy.stats.qmc.LatinHypercube for it")
+        if strength != 1:
+            raise _invalid("strength", strength, "must be 1 (2 is scipy's orthogonal-array LHS)")
+        self.strength = strength
+        self._setup(d, optimization=optimization, seed=seed, rng=rng)
+        self._init_quad = {"d": self.d, "scramble": True, "strength": strength, "optimization": self._optimization_name}
+
+    def _random(self, n=1, *, workers=1):
+        # Design k is seeded by (seed, points drawn before it); the first one
+        # uses the seed itself, so it equals stratum.points("n-rooks", n, d, seed).
+        seed = self._stratum_seed if self.num_generated == 0 else _mix(self._stratum_seed, self.num_generated)
+        params = {} if self.scramble else {"centered": 1}
+        return _points(self._registry_name, n, self.d, seed=seed, threads=workers, **params)
+
+
+class PoissonDisk(_Engine):
+    """Poisson-disk points (Bridson 2007) from the registry's "poisson-disk".
+
+    Same arguments as ``scipy.stats.qmc.PoissonDisk`` (radius, ncandidates,
+    hypersphere="volume"): random(n) hands out the next n points of one
+    maximal set whose points are at least `radius` apart, fewer when the set
+    is exhausted; fill_space() returns every point left.
+
+    stratum extension: periodic=True measures distances on the torus.
+    """
+
+    _registry_name = "poisson-disk"
+
+    def __init__(self, d, *, radius=0.05, hypersphere="volume", ncandidates=30, optimization=None, seed=None,
+                 rng=None, periodic=False):
+        if isinstance(radius, (bool, np.bool_)) or not isinstance(radius, (numbers.Real, np.floating, np.integer)) \
+                or not 0 < float(radius) <= 1:
+            raise _invalid("radius", radius, "must be a number in (0, 1]")
+        if hypersphere == "surface":
+            raise NotImplementedError("PoissonDisk(hypersphere='surface') is not available in stratum: its "
+                                      "Poisson-disk sampler draws candidates in the annulus volume only")
+        if hypersphere != "volume":
+            raise _invalid("hypersphere", hypersphere, "must be 'volume' ('surface' is not available in stratum)")
+        self.radius = float(radius)
+        self.hypersphere = hypersphere
+        self.ncandidates = _integer("ncandidates", ncandidates, 1, allowed="must be a positive integer")
+        self.periodic = _flag("periodic", periodic)
+        self._setup(d, optimization=optimization, seed=seed, rng=rng)
+        self._maximal = None
+        self._init_quad = {"d": self.d, "radius": self.radius, "hypersphere": hypersphere,
+                           "ncandidates": self.ncandidates, "optimization": self._optimization_name,
+                           "periodic": self.periodic}
+
+    def _maximal_set(self, threads):
+        if self._maximal is None:
+            params = {"candidates": self.ncandidates}
+            if self.periodic:
+                params["periodic"] = 1
+            self._maximal = _points(self._registry_name, None, self.d, seed=self._stratum_seed, radius=self.radius,
+                                    threads=threads, **params)
+        return self._maximal
+
+    def _random(self, n=1, *, workers=1):
+        maximal = self._maximal_set(workers)
+        return maximal[self.num_generated:self.num_generated + n].copy()
+
+    def fill_space(self):
+        """Every point of the maximal set not yet handed out."""
+        remaining = len(self._maximal_set(1)) - self.num_generated
+        return self.random(max(remaining, 0))
+
+    def fast_forward(self, n):
+        n = _integer("n", n, 0, allowed="must be a non-negative integer")
+        self.num_generated = min(self.num_generated + n, len(self._maximal_set(1)))
+        return self
