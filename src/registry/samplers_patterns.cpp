@@ -1,6 +1,19 @@
 /// Registry entries of the finite patterns.
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "families.hpp"
+#include "stratum/patterns/grid.hpp"
+#include "stratum/patterns/jittered.hpp"
+#include "stratum/patterns/latin_hypercube.hpp"
+#include "stratum/patterns/latin_square.hpp"
+#include "stratum/patterns/multi_jittered.hpp"
+#include "stratum/patterns/n_queens.hpp"
 #include "stratum/patterns/random.hpp"
+#include "stratum/patterns/zaremba.hpp"
+#include "stratum/randomizers/cranley_patterson.hpp"
 #include "support.hpp"
 
 namespace stratum::registry_families {
@@ -8,6 +21,142 @@ namespace stratum::registry_families {
 using namespace registry_support;
 
 static std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
+
+/// "4x8" (or "4,8") → {4, 8}; every part a positive integer.
+static std::vector<std::uint64_t> parse_strata(const std::string& text) {
+  std::vector<std::uint64_t> parts;
+  std::string item;
+  auto flush = [&] {
+    char* end = nullptr;
+    const unsigned long long value = item.empty() ? 0 : std::strtoull(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || item[0] == '-' || value == 0)
+      throw invalid_argument("strata", text.empty() ? "''" : text,
+                             "must be positive integers separated by x, e.g. strata=4x8");
+    parts.push_back(value);
+    item.clear();
+  };
+  for (char ch : text) {
+    if (ch == 'x' || ch == 'X' || ch == ',') flush();
+    else item += ch;
+  }
+  flush();
+  return parts;
+}
+
+/// The strata of a grid or jittered request: strata= if given, else k^d = n.
+static StrataShape strata_of(const SamplerRequest& request) {
+  const std::uint64_t n = *request.n;
+  if (const auto text = param_text(request, "strata"); text && !text->empty()) {
+    auto parts = parse_strata(*text);
+    require(parts.size() == request.d, "strata", *text,
+            "needs one count per dimension (d = " + std::to_string(request.d) + ")");
+    StrataShape shape(std::move(parts));
+    require(shape.count() == n, "n", n, "must equal the product of strata=" + *text);
+    return shape;
+  }
+  return StrataShape::equal(n, request.d);
+}
+
+static std::uint64_t nearest_square_below(std::uint64_t n) { return integer_root(n, 2); }
+
+/// Order m of a latin-square request (n = m^2), or a message naming n.
+static std::uint64_t latin_square_order(const SamplerRequest& request) {
+  const std::uint64_t n = *request.n;
+  const std::uint64_t m = nearest_square_below(n);
+  if (m * m != n)
+    throw invalid_argument("n", std::to_string(n),
+                           "latin-square takes n = m^2 points (order m Latin square; nearest: " +
+                               std::to_string(m * m) + ", " + std::to_string((m + 1) * (m + 1)) + ")");
+  require(m <= LatinSquare::max_order, "n", n, "the order m = sqrt(n) must be at most 65535");
+  return m;
+}
+
+static LatinSquare latin_square_of(const SamplerRequest& request) {
+  const std::uint64_t m = latin_square_order(request);
+  const std::string method = param_text(request, "method").value_or("jacobson-matthews");
+  LatinSquare::Method kind;
+  if (method == "jacobson-matthews") kind = LatinSquare::Method::jacobson_matthews;
+  else if (method == "permuted-cyclic") kind = LatinSquare::Method::permuted_cyclic;
+  else throw invalid_argument("method", method, "must be jacobson-matthews or permuted-cyclic");
+  std::uint64_t steps = LatinSquare::default_steps(m);
+  if (const auto given = param_int(request, "steps")) {
+    require(*given >= 0, "steps", *given, "must be a non-negative integer");
+    steps = static_cast<std::uint64_t>(*given);
+  }
+  // Each move from a proper square costs about m moves with its improper
+  // excursion: bound the total near 2^28 moves (seconds).
+  constexpr std::uint64_t max_moves = std::uint64_t{1} << 28;
+  if (kind == LatinSquare::Method::jacobson_matthews)
+    require(steps <= max_moves / m, "steps", steps,
+            "Jacobson-Matthews takes at most 2^28 / m = " + std::to_string(max_moves / m) +
+                " proper moves here (m = " + std::to_string(m) +
+                ", default m^2); use method=permuted-cyclic or a smaller steps= for large squares");
+  return LatinSquare(m, request.seed, kind, steps);
+}
+
+static double aspect_of(const SamplerRequest& request) {
+  const auto text = param_text(request, "aspect");
+  if (!text || text->empty()) return 1.0;
+  char* end = nullptr;
+  const double value = std::strtod(text->c_str(), &end);
+  if (*end != '\0') throw invalid_argument("aspect", *text, "must be a positive number (columns / rows)");
+  return value;
+}
+
+static MultiJittered multi_jittered_of(const SamplerRequest& request) {
+  const std::uint64_t n = *request.n;
+  if (const auto text = param_text(request, "strata"); text && !text->empty()) {
+    const auto parts = parse_strata(*text);
+    require(parts.size() == 2, "strata", *text, "multi-jittered needs columns x rows, e.g. strata=4x8");
+    require(n % parts[0] == 0 && n / parts[0] == parts[1], "n", n,
+            "must equal the product of strata=" + *text);
+    return MultiJittered(parts[0], parts[1], request.seed);
+  }
+  return MultiJittered::closest_to_square(n, request.seed);
+}
+
+/// Applies the request's randomizer ("none" or "cp") to an index-addressable pattern.
+template <class Pattern>
+static PointSet fill_with_randomizer(const SamplerRequest& request, const Pattern& pattern) {
+  if (request.randomize == "cp") {
+    const CranleyPattersonRotation rotation(request.seed);
+    return fill_index_addressable(*request.n, request.d, request.threads,
+                                  [&](std::uint64_t i, unsigned j) { return rotation(pattern.sample(i, j), j); });
+  }
+  return fill_index_addressable(*request.n, request.d, request.threads,
+                                [&](std::uint64_t i, unsigned j) { return pattern.sample(i, j); });
+}
+
+static PointSet generate_latin_hypercube(const SamplerRequest& request) {
+  const LatinHypercube lhs(*request.n, request.d, request.seed, param_bool(request, "centered", false));
+  PointSet points = allocate_points(*request.n, request.d);
+  std::vector<std::uint64_t> cells(*request.n);
+  double* out = points.data.get();
+  for (unsigned j = 0; j < request.d; ++j) {
+    lhs.permutation(j, cells.data());
+    parallel_rows(*request.n, request.threads, [&](std::uint64_t begin, std::uint64_t end) {
+      for (std::uint64_t i = begin; i < end; ++i) out[i * request.d + j] = lhs.coordinate(cells[i], i, j);
+    });
+  }
+  return points;
+}
+
+static SamplerInfo latin_hypercube_entry(std::string name, std::string description) {
+  return {
+      .name = std::move(name),
+      .kind = "pattern",
+      .description = std::move(description),
+      .min_dim = 1,
+      .max_dim = 1u << 16,
+      .properties = {"Latin (one point per 1/n interval in every coordinate)", "unbiased"},
+      .randomizers = {"none"},
+      .counts = "any n >= 1",
+      .params = {{"centered", "1: points at the interval centres (scipy's scramble=False)", "0"}},
+      .validate = [](const SamplerRequest& request) { param_bool(request, "centered", false); },
+      .count = requested_count,
+      .generate = generate_latin_hypercube,
+  };
+}
 
 std::vector<SamplerInfo> patterns() {
   std::vector<SamplerInfo> list;
@@ -30,6 +179,160 @@ std::vector<SamplerInfo> patterns() {
             return fill_index_addressable(*request.n, request.d, request.threads,
                                           [&](std::uint64_t i, unsigned j) { return random.sample(i, j); });
           },
+  });
+
+  const ParamSpec strata_param{"strata", "strata per dimension, e.g. 4x8 (product must equal n)", ""};
+  const std::string strata_counts = "n = k^d (a perfect d-th power), or any n with strata=n1x...xnd of product n";
+
+  list.push_back({
+      .name = "grid",
+      .kind = "pattern",
+      .description = "cell centres of an n1 x ... x nd grid (the midpoint product rule)",
+      .min_dim = 1,
+      .max_dim = 1u << 16,
+      .properties = {"stratified (one point per cell)", "deterministic", "index-addressable"},
+      .randomizers = {"none", "cp"},
+      .counts = strata_counts,
+      .params = {strata_param},
+      .validate = [](const SamplerRequest& request) { strata_of(request); },
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, Grid(strata_of(request))); },
+  });
+
+  list.push_back({
+      .name = "jittered",
+      .kind = "pattern",
+      .description = "one uniform point in each cell of an n1 x ... x nd grid (Cook 1986, stratified sampling)",
+      .min_dim = 1,
+      .max_dim = 1u << 16,
+      .properties = {"stratified (one point per cell)", "unbiased", "index-addressable"},
+      .randomizers = {"none"},
+      .counts = strata_counts,
+      .params = {strata_param},
+      .validate = [](const SamplerRequest& request) { strata_of(request); },
+      .count = requested_count,
+      .generate =
+          [](const SamplerRequest& request) {
+            return fill_with_randomizer(request, Jittered(strata_of(request), request.seed));
+          },
+  });
+
+  list.push_back(latin_hypercube_entry(
+      "n-rooks",
+      "N-rooks / Latin hypercube: one random permutation per dimension (McKay, Beckman, Conover 1979; Shirley 1991)"));
+  list.push_back(latin_hypercube_entry(
+      "latin-hypercube", "alias of n-rooks (same points for the same request): Latin hypercube sampling (McKay et al. 1979)"));
+
+  list.push_back({
+      .name = "multi-jittered",
+      .kind = "pattern",
+      .description = "multi-jittered: m x k strata and Latin in x and y (Chiu, Shirley, Wang 1994)",
+      .min_dim = 2,
+      .max_dim = 2,
+      .properties = {"Latin in x and y", "one point per m x k stratum", "unbiased"},
+      .randomizers = {"none"},
+      .counts = "any n >= 1 (m x k with m <= k closest to sqrt(n); m = 1 for prime n), or strata=mxk of product n",
+      .params = {{"strata", "columns x rows, e.g. 4x8 (product must equal n); default: closest to square", ""}},
+      .validate = [](const SamplerRequest& request) { multi_jittered_of(request); },
+      .count = requested_count,
+      .generate =
+          [](const SamplerRequest& request) {
+            const MultiJittered mj = multi_jittered_of(request);
+            PointSet points = allocate_points(*request.n, 2);
+            double* out = points.data.get();
+            parallel_rows(mj.columns(), request.threads, [&](std::uint64_t begin, std::uint64_t end) {
+              std::vector<std::uint64_t> scratch(mj.rows());
+              for (std::uint64_t i = begin; i < end; ++i) mj.fill_x(i, out, scratch.data());
+            });
+            parallel_rows(mj.rows(), request.threads, [&](std::uint64_t begin, std::uint64_t end) {
+              std::vector<std::uint64_t> scratch(mj.columns());
+              for (std::uint64_t j = begin; j < end; ++j) mj.fill_y(j, out, scratch.data());
+            });
+            return points;
+          },
+  });
+
+  list.push_back({
+      .name = "cmj",
+      .kind = "pattern",
+      .description = "correlated multi-jittered, index-addressable with hashed permutations (Kensler 2013)",
+      .min_dim = 2,
+      .max_dim = 2,
+      .properties = {"Latin in y", "Latin in x and one point per m x k stratum when n = m*k (m = floor(sqrt(n*aspect)))",
+                     "unbiased", "index-addressable"},
+      .randomizers = {"none"},
+      .counts = "any n in [1, 2^32 - 1]; fully stratified when n = m * ceil(n/m), e.g. squares and m(m+1)",
+      .params = {{"aspect", "columns / rows of the strata (Kensler's a)", "1"}},
+      .validate = [](const SamplerRequest& request) { CorrelatedMultiJittered(*request.n, 0, aspect_of(request)); },
+      .count = requested_count,
+      .generate =
+          [](const SamplerRequest& request) {
+            return fill_with_randomizer(request, CorrelatedMultiJittered(*request.n, request.seed, aspect_of(request)));
+          },
+  });
+
+  list.push_back({
+      .name = "n-queens",
+      .kind = "pattern",
+      .description = "N-queens: one point per row and column of an n x n grid, no two cells on a diagonal; explicit "
+                     "solutions (modular a*i+b when gcd(n,6)=1, else Hoffman-Loessi-Moore 1969), a random symmetry "
+                     "of the square, jittered in the cells",
+      .min_dim = 2,
+      .max_dim = 2,
+      .properties = {"Latin in x and y", "no two points in a diagonal of cells",
+                     "unbiased when gcd(n,6)=1 or with cp"},
+      .randomizers = {"none", "cp"},
+      .counts = "n = 1 or n >= 4 (no n-queens solution exists for n = 2, 3)",
+      .params = {},
+      .validate = [](const SamplerRequest& request) { NQueens(*request.n, request.seed); },
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, NQueens(*request.n, request.seed)); },
+  });
+
+  list.push_back({
+      .name = "latin-square",
+      .kind = "pattern",
+      .description = "random Latin square of order m as n = m^2 points (row, column, symbol) in [0,1)^3, jittered "
+                     "in their cells: every 2D projection is an m x m jittered grid (Jacobson-Matthews 1996 for "
+                     "uniform squares, or a permuted cyclic square)",
+      .min_dim = 3,
+      .max_dim = 3,
+      .properties = {"orthogonal array of strength 2 (each 2D projection one point per m x m cell)",
+                     "Latin square (each symbol once per row and column)", "unbiased"},
+      .randomizers = {"none"},
+      .counts = "n = m^2 (m <= 65535; jacobson-matthews by default needs m^3 <= 2^28, i.e. m <= 645; steps= can lower it)",
+      .params = {{"method", "jacobson-matthews (uniform, MCMC) or permuted-cyclic (isotopes of Z_m, fast)",
+                  "jacobson-matthews"},
+                 {"steps", "Jacobson-Matthews moves from proper squares (default m^2, about m^3 moves in all)", ""}},
+      .validate = [](const SamplerRequest& request) { latin_square_of(request); },
+      .count = requested_count,
+      .generate =
+          [](const SamplerRequest& request) {
+            const LatinSquare square = latin_square_of(request);
+            std::vector<std::uint32_t> symbols(square.count());
+            std::vector<std::uint32_t> scratch(square.scratch_size());
+            square.fill_symbols(symbols.data(), scratch.data());
+            return fill_index_addressable(*request.n, 3, request.threads, [&](std::uint64_t i, unsigned j) {
+              return square.coordinate(i, j, symbols[i]);
+            });
+          },
+  });
+
+  list.push_back({
+      .name = "zaremba",
+      .kind = "pattern",
+      .description = "Zaremba's points: Hammersley (i/N, phi_2(i)) with every second binary digit of i complemented "
+                     "(Zaremba 1968; Halton, Zaremba 1969)",
+      .min_dim = 2,
+      .max_dim = 2,
+      .properties = {"low-discrepancy", "Latin in x", "(0,k,2)-net in base 2 when n = 2^k", "deterministic",
+                     "index-addressable"},
+      .randomizers = {"none", "cp"},
+      .counts = "any n >= 1 (Zaremba's set exactly for n = 2^k)",
+      .params = {},
+      .validate = nullptr,
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, Zaremba(*request.n)); },
   });
 
   return list;

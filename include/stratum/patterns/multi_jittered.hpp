@@ -1,0 +1,189 @@
+#pragma once
+/// Multi-jittered sampling (Chiu, Shirley, Wang 1994, "Multi-jittered
+/// sampling", Graphics Gems IV): n = m × k points in [0, 1)², one in each
+/// cell of an m × k grid of strata *and* one in each of the n equal
+/// intervals of both coordinates (jittered and N-rooks at once, lecture §7).
+/// The canonical arrangement puts the point of stratum (i, j) in fine
+/// column i·k + j and fine row j·m + i; shuffling the fine columns inside
+/// each coarse column and the fine rows inside each coarse row keeps both
+/// properties and randomizes the set.
+///
+/// Correlated multi-jittered sampling (Kensler 2013, "Correlated
+/// Multi-Jittered Sampling", Pixar Technical Memo 13-01) uses the same
+/// shuffle for every coarse column (and row), which lowers discrepancy, and
+/// draws the shuffles from a hash-based permutation permute(i, l, p), so any
+/// sample is computed from its index alone. For any n it takes m = ⌊√(n·a)⌋
+/// columns and k = ⌈n/m⌉ rows (aspect a), shuffles the sample index over n
+/// and keeps y Latin over n intervals; when n = m·k the set is also Latin in
+/// x and has one point per m × k stratum (as with n a square or m(m+1)).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "stratum/patterns/strata.hpp"
+
+namespace stratum {
+
+/// Kensler's (2013) hash-based permutation of {0, …, l-1} (his Listing 3):
+/// a bijective hash on the next power of two, cycle-walking until the value
+/// falls below l, then a rotation by p. p selects the permutation. The final
+/// rotation (i + p) mod l is computed in 64 bits: the memo's 32-bit sum wraps
+/// for large p and can then map two indices to one value.
+constexpr std::uint32_t kensler_permute(std::uint32_t i, std::uint32_t l, std::uint32_t p) noexcept {
+  std::uint32_t w = l - 1;
+  w |= w >> 1;
+  w |= w >> 2;
+  w |= w >> 4;
+  w |= w >> 8;
+  w |= w >> 16;
+  do {
+    i ^= p;
+    i *= 0xe170893du;
+    i ^= p >> 16;
+    i ^= (i & w) >> 4;
+    i ^= p >> 8;
+    i *= 0x0929eb3fu;
+    i ^= p >> 23;
+    i ^= (i & w) >> 1;
+    i *= 1u | p >> 27;
+    i *= 0x6935fa69u;
+    i ^= (i & w) >> 11;
+    i *= 0x74dcb303u;
+    i ^= (i & w) >> 2;
+    i *= 0x9e501cc3u;
+    i ^= (i & w) >> 2;
+    i *= 0xc860a3dfu;
+    i &= w;
+    i ^= i >> 5;
+  } while (i >= l);
+  return static_cast<std::uint32_t>((static_cast<std::uint64_t>(i) + p) % l);
+}
+
+/// Kensler's (2013) hash of (i, p) to 32 bits (his randfloat before scaling).
+constexpr std::uint32_t kensler_hash(std::uint32_t i, std::uint32_t p) noexcept {
+  i ^= p;
+  i ^= i >> 17;
+  i ^= i >> 10;
+  i *= 0xb36534e5u;
+  i ^= i >> 12;
+  i ^= i >> 21;
+  i *= 0x93fc4795u;
+  i ^= 0xdf6e307fu;
+  i ^= i >> 17;
+  i *= 1u | p >> 18;
+  return i;
+}
+
+/// Chiu–Shirley–Wang multi-jittered points: `columns` × `rows` strata.
+class MultiJittered {
+ public:
+  MultiJittered(std::uint64_t columns, std::uint64_t rows, std::uint64_t seed)
+      : columns_(columns), rows_(rows), seed_(seed) {
+    require(columns >= 1 && rows >= 1 && columns <= (std::uint64_t{1} << 52) / rows, "strata",
+            std::to_string(columns) + "x" + std::to_string(rows),
+            "multi-jittered needs at least one column and row and at most 2^52 points");
+  }
+
+  /// The m × k factorization of n with m ≤ k and m as close to √n as
+  /// possible (m = 1 when n is prime).
+  static MultiJittered closest_to_square(std::uint64_t n, std::uint64_t seed) {
+    require(n >= 1 && n <= (std::uint64_t{1} << 52), "n", n, "multi-jittered needs 1 <= n <= 2^52");
+    std::uint64_t m = integer_root(n, 2);
+    while (n % m != 0) --m;
+    return MultiJittered(m, n / m, seed);
+  }
+
+  std::uint64_t columns() const noexcept { return columns_; }
+  std::uint64_t rows() const noexcept { return rows_; }
+  std::uint64_t count() const noexcept { return columns_ * rows_; }
+  /// Integers of scratch that fill_x / fill_y / generate need.
+  std::uint64_t scratch_size() const noexcept { return std::max(columns_, rows_); }
+
+  /// Point (i, j), the one in stratum column i and row j, has index j·m + i.
+  /// Writes the x coordinates of coarse column i into out (row-major n × 2).
+  template <class Real = double, class Index>
+  void fill_x(std::uint64_t column, Real* out, Index* scratch) const noexcept {
+    random_permutation(scratch, rows_, hash64(seed_, 0x4d4a58ULL, column));
+    for (std::uint64_t j = 0; j < rows_; ++j) {
+      const std::uint64_t index = j * columns_ + column;
+      out[2 * index] = cell_coordinate<Real>(column * rows_ + scratch[j], jitter(index, 0), count());
+    }
+  }
+  /// Writes the y coordinates of coarse row j into out.
+  template <class Real = double, class Index>
+  void fill_y(std::uint64_t row, Real* out, Index* scratch) const noexcept {
+    random_permutation(scratch, columns_, hash64(seed_, 0x4d4a59ULL, row));
+    for (std::uint64_t i = 0; i < columns_; ++i) {
+      const std::uint64_t index = row * columns_ + i;
+      out[2 * index + 1] = cell_coordinate<Real>(row * columns_ + scratch[i], jitter(index, 1), count());
+    }
+  }
+  /// All count() points, row-major (x, y), with scratch_size() integers of scratch.
+  template <class Real = double, class Index>
+  void generate(Real* out, Index* scratch) const noexcept {
+    for (std::uint64_t i = 0; i < columns_; ++i) fill_x(i, out, scratch);
+    for (std::uint64_t j = 0; j < rows_; ++j) fill_y(j, out, scratch);
+  }
+
+ private:
+  double jitter(std::uint64_t index, unsigned dim) const noexcept {
+    return uniform01<double>(hash64(seed_, 0x4d4a4a4954ULL), index, dim);
+  }
+  std::uint64_t columns_;
+  std::uint64_t rows_;
+  std::uint64_t seed_;
+};
+
+/// Kensler's correlated multi-jittered points, index-addressable.
+class CorrelatedMultiJittered {
+ public:
+  /// n points (1 ≤ n < 2^32), aspect ratio a = columns / rows > 0. The
+  /// 64-bit seed is hashed to Kensler's 32-bit pattern number p.
+  CorrelatedMultiJittered(std::uint64_t count, std::uint64_t seed, double aspect = 1.0)
+      : count_(count), pattern_(static_cast<std::uint32_t>(hash64(seed, 0x434d4aULL) >> 32)) {
+    require(count >= 1 && count <= 0xffffffffULL, "n", count,
+            "correlated multi-jittered takes 1 <= n <= 2^32 - 1 (32-bit hash permutations)");
+    require(std::isfinite(aspect) && aspect > 0, "aspect", aspect, "must be a positive number");
+    // m = ⌊√(n a)⌋, exact for a = 1 (the memo's sqrtf rounds for large n).
+    std::uint64_t m = aspect == 1.0 ? integer_root(count, 2)
+                                    : static_cast<std::uint64_t>(std::floor(std::sqrt(static_cast<double>(count) * aspect)));
+    columns_ = std::clamp<std::uint64_t>(m, 1, count);
+    rows_ = (count + columns_ - 1) / columns_;
+  }
+
+  std::uint64_t count() const noexcept { return count_; }
+  std::uint64_t columns() const noexcept { return columns_; }
+  std::uint64_t rows() const noexcept { return rows_; }
+  /// Kensler's p.
+  std::uint32_t pattern() const noexcept { return pattern_; }
+  /// Whether n = columns × rows, so the set is Latin in x and stratified in
+  /// columns × rows cells as well as Latin in y.
+  bool complete() const noexcept { return columns_ * rows_ == count_; }
+
+  template <class Real = double>
+  Real sample(std::uint64_t index, unsigned dim) const noexcept {
+    const auto n = static_cast<std::uint32_t>(count_);
+    const auto m = static_cast<std::uint32_t>(columns_);
+    const auto k = static_cast<std::uint32_t>(rows_);
+    const std::uint32_t p = pattern_;
+    const std::uint32_t s = kensler_permute(static_cast<std::uint32_t>(index), n, p * 0x51633e2du);
+    if (dim == 0) {
+      const std::uint64_t sx = kensler_permute(s % m, m, p * 0x68bc21ebu);
+      const std::uint64_t sy = kensler_permute(s / m, k, p * 0x02e5be93u);
+      const double jx = kensler_hash(s, p * 0x967a889bu) * 0x1.0p-32;
+      // (sx + (sy + jx) / k) / m = (sx·k + sy + jx) / (m·k)
+      return cell_coordinate<Real>(sx * k + sy, jx, columns_ * rows_);
+    }
+    const double jy = kensler_hash(s, p * 0x368cc8b7u) * 0x1.0p-32;
+    return cell_coordinate<Real>(s, jy, count_);
+  }
+
+ private:
+  std::uint64_t count_;
+  std::uint32_t pattern_;
+  std::uint64_t columns_ = 1;
+  std::uint64_t rows_ = 1;
+};
+
+}  // namespace stratum
