@@ -13,7 +13,9 @@ The constructions follow scipy's definitions (Sobol' with Joe-Kuo direction
 numbers scrambled by LMS + digital shift, Halton scrambled by random digit
 permutations, Latin hypercube, Bridson's Poisson disk), but the random streams
 are stratum's counter-based ones: for the same seed the values differ from
-scipy's. Unscrambled Sobol' and Halton points are identical to scipy's.
+scipy's. Unscrambled Sobol' points are bit-identical to scipy's; unscrambled
+Halton points are correctly rounded, so they match scipy's (which sums
+digits in floating point) to within 4 ulp, exactly in base 2.
 Every difference is listed in docs/python-qmc.md.
 """
 from __future__ import annotations
@@ -329,7 +331,7 @@ class Halton(_Sequence):
 
     Same arguments as ``scipy.stats.qmc.Halton``: scramble=True applies random
     digit permutations (Owen 2017, scipy's scrambling); scramble=False is the
-    plain sequence, identical to scipy's.
+    plain sequence, correctly rounded (scipy's is within 4 ulp of it).
 
     stratum extension: randomize= picks any randomizer of the "halton"
     registry entry; it overrides scramble.

@@ -2,6 +2,7 @@
 /// Halton points (φ2(i), φ3(i), φ5(i), …): the radical inverse in the
 /// d-th prime base for dimension d (Halton 1960). Sequential, with star
 /// discrepancy O(log^d N / N).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -9,6 +10,15 @@
 #include "stratum/util/primes.hpp"
 
 namespace stratum {
+
+namespace detail {
+/// radical_inverse_reciprocal of every prime base, computed at compile time.
+inline constexpr std::array<std::uint64_t, prime_count> prime_reciprocals = [] {
+  std::array<std::uint64_t, prime_count> table{};
+  for (std::size_t i = 0; i < prime_count; ++i) table[i] = radical_inverse_reciprocal(prime(i));
+  return table;
+}();
+}  // namespace detail
 
 class Halton {
  public:
@@ -25,7 +35,7 @@ class Halton {
 
   template <class Real = double>
   constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return radical_inverse_as<Real>(base(dim), index);
+    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim]));
   }
 
  private:
@@ -52,7 +62,7 @@ class Hammersley {
   template <class Real = double>
   constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     if (dim == 0) return to_unit<Real>(static_cast<double>(index) / static_cast<double>(count_));
-    return radical_inverse_as<Real>(base(dim), index);
+    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim - 1]));
   }
 
  private:
