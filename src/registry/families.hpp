@@ -6,8 +6,8 @@
 
 namespace stratum::registry_families {
 std::vector<SamplerInfo> sequences();   // samplers_sequences.cpp: halton, hammersley
-std::vector<SamplerInfo> sobol();       // samplers_sobol.cpp: sobol
-std::vector<SamplerInfo> pmj();         // samplers_pmj.cpp: (0,2)-sequence, pmj02
+std::vector<SamplerInfo> sobol();       // samplers_sobol.cpp: sobol, zero-two (the (0,2)-sequence)
+std::vector<SamplerInfo> pmj();         // samplers_pmj.cpp: pmj02
 std::vector<SamplerInfo> lattices();    // samplers_lattices.cpp: fibonacci, lattice
 std::vector<SamplerInfo> patterns();    // samplers_patterns.cpp: random, grid, jittered, n-rooks, ...
 std::vector<SamplerInfo> poisson();     // samplers_poisson.cpp: poisson-disk, best-candidate

@@ -13,9 +13,13 @@ constexpr std::uint32_t reverse_bits32(std::uint32_t v) noexcept {
   return (v >> 16) | (v << 16);
 }
 
+/// Byte swap, then reverse the bits within each byte (three mask steps).
 constexpr std::uint64_t reverse_bits64(std::uint64_t v) noexcept {
-  return (static_cast<std::uint64_t>(reverse_bits32(static_cast<std::uint32_t>(v))) << 32) |
-         reverse_bits32(static_cast<std::uint32_t>(v >> 32));
+  v = __builtin_bswap64(v);
+  v = ((v >> 4) & 0x0f0f0f0f0f0f0f0fULL) | ((v & 0x0f0f0f0f0f0f0f0fULL) << 4);
+  v = ((v >> 2) & 0x3333333333333333ULL) | ((v & 0x3333333333333333ULL) << 2);
+  v = ((v >> 1) & 0x5555555555555555ULL) | ((v & 0x5555555555555555ULL) << 1);
+  return v;
 }
 
 }  // namespace stratum

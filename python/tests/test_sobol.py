@@ -1,0 +1,108 @@
+"""The "sobol" and "zero-two" registry entries from Python, against scipy.
+
+What holds exactly: scipy.stats.qmc.Sobol(d, scramble=False, bits=b) returns
+point i as floor(x_i * 2^b) / 2^b, where x_i is stratum's 64-bit word (the
+same Joe-Kuo generator matrices and the same Gray-code order, point 0 the
+origin). For i < 2^k every coordinate is a multiple of 2^-k, so for any
+index below 2^b (scipy's own limit, 2^30 by default) the two float64 arrays
+are identical, not merely close. Past 2^32 scipy 1.10 cannot follow
+(fast_forward fails for bits > 32); the C++ tests compare with
+boost::random::sobol there.
+"""
+import warnings
+
+import numpy as np
+import pytest
+from scipy.stats import qmc
+
+import stratum
+
+RANDOMIZERS = ["owen-hash", "none", "owen", "xor", "lms", "cp"]
+
+
+def scipy_sobol(d, n, skip=0, bits=None):
+    engine = qmc.Sobol(d, scramble=False, bits=bits)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # scipy warns when n is not a power of two
+        if skip:
+            engine.fast_forward(skip)
+        return engine.random(n)
+
+
+def test_registry_entries():
+    info = {s["name"]: s for s in stratum.samplers()}
+    assert info["sobol"]["randomizers"] == RANDOMIZERS
+    assert (info["sobol"]["min_dim"], info["sobol"]["max_dim"]) == (1, 3667)
+    assert info["zero-two"]["randomizers"] == ["owen-hash", "none", "owen", "xor", "lms"]
+    assert (info["zero-two"]["min_dim"], info["zero-two"]["max_dim"]) == (2, 2)
+
+
+def test_unscrambled_equals_scipy_exactly():
+    ours = stratum.points("sobol", 1024, 8, randomize="none")
+    assert np.array_equal(ours, scipy_sobol(8, 1024))
+    assert np.array_equal(ours, scipy_sobol(8, 1024, bits=53))
+    # Deep into scipy's default 30-bit range, with a start that is not aligned.
+    skip = 2**29 + 12345
+    ours = stratum.points("sobol", 1000, 8, randomize="none", start=skip)
+    theirs = scipy_sobol(8, 1000, skip=skip)
+    assert np.array_equal(ours, theirs)
+    assert np.array_equal(np.floor(ours * 2**30) / 2**30, theirs)  # the general relation, trivially here
+
+
+def test_all_joe_kuo_dimensions_equal_scipy():
+    ours = stratum.points("sobol", 64, 3667, randomize="none")
+    assert np.array_equal(ours, scipy_sobol(3667, 64))
+
+
+def test_too_many_dimensions_is_an_error():
+    with pytest.raises(stratum.InvalidArgument, match="d = 3668"):
+        stratum.points("sobol", 16, 3668)
+    with pytest.raises(stratum.InvalidArgument, match="d = 3"):
+        stratum.points("zero-two", 16, 3)
+    with pytest.raises(stratum.InvalidArgument, match="order"):
+        stratum.points("sobol", 16, 2, order="random")
+
+
+def test_natural_order_option():
+    natural = stratum.points("sobol", 8, 2, randomize="none", order="natural")
+    assert natural[:, 1].tolist() == [0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875]
+    gray = stratum.points("sobol", 64, 4, randomize="none")
+    assert np.array_equal(np.sort(gray, axis=0), np.sort(stratum.points("sobol", 64, 4, randomize="none",
+                                                                        order="natural"), axis=0))
+
+
+def test_start_past_two_to_the_32_does_not_wrap():
+    near = stratum.points("sobol", 64, 4, randomize="none")
+    far = stratum.points("sobol", 64, 4, randomize="none", start=2**32)
+    assert np.all((far >= 0) & (far < 1))
+    assert not np.any(np.all(far == near, axis=1))
+    # Blocks of 64 starting at 2^32 are still (t,6,s)-nets: dims 0 and 1 stratify.
+    assert sorted((far[:, 0] * 64).astype(int)) == list(range(64))
+
+
+@pytest.mark.parametrize("randomize", ["owen-hash", "none", "owen", "xor", "lms"])
+def test_zero_two_is_a_zero_m_two_net_at_powers_of_two(randomize):
+    x = stratum.points("zero-two", 256, 2, seed=3, randomize=randomize)
+    assert np.array_equal(x, stratum.points("sobol", 256, 2, seed=3, randomize=randomize))
+    for i in range(9):
+        cells = (np.floor(x[:, 0] * 2**i) * 2 ** (8 - i) + np.floor(x[:, 1] * 2 ** (8 - i))).astype(int)
+        assert sorted(cells) == list(range(256)), (randomize, i)
+
+
+@pytest.mark.parametrize("randomize", [r for r in RANDOMIZERS if r != "none"])
+def test_randomizers_are_seeded_and_reproducible(randomize):
+    a = stratum.points("sobol", 128, 5, seed=1, randomize=randomize)
+    assert np.array_equal(a, stratum.points("sobol", 128, 5, seed=1, randomize=randomize, threads=2))
+    assert not np.array_equal(a, stratum.points("sobol", 128, 5, seed=2, randomize=randomize))
+    assert not np.array_equal(a, stratum.points("sobol", 128, 5, randomize="none"))
+    assert np.all((a >= 0) & (a < 1))
+    # Every randomizer keeps the 1D stratification of 128 = 2^7 points.
+    for j in range(5):
+        assert sorted((a[:, j] * 128).astype(int)) == list(range(128))
+
+
+def test_default_randomizer_is_owen_hash_with_53_random_digits():
+    a = stratum.points("sobol", 64, 3, seed=9)
+    assert np.array_equal(a, stratum.points("sobol", 64, 3, seed=9, randomize="owen-hash"))
+    # All 53 digits are scrambled: the low digits are not zero.
+    assert np.mean((a * 2**53) % 2**21 != 0) > 0.99
