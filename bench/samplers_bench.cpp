@@ -6,19 +6,26 @@
 #include <algorithm>
 #include <memory>
 
+#include <boost/random/sobol.hpp>
+
+#include "stratum/randomizers/base2.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
+#include "support.hpp"
 
 namespace {
 
 constexpr unsigned kDims = 4;
 
+// The baseline allocates its buffer exactly as the registry does (same
+// allocator, same huge-page advice) and writes a constant into it.
 void memory_write_baseline(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   for (auto _ : state) {
-    std::unique_ptr<double[]> buffer(new double[n * kDims]);
-    std::fill_n(buffer.get(), n * kDims, 0.5);
-    benchmark::DoNotOptimize(buffer.get());
+    stratum::PointSet buffer = stratum::registry_support::allocate_points(n, kDims);
+    std::fill_n(buffer.data.get(), n * kDims, 0.5);
+    benchmark::DoNotOptimize(buffer.data.get());
     benchmark::ClobberMemory();
   }
   state.counters["ns_per_coord"] =
@@ -43,12 +50,57 @@ void registry_sampler(benchmark::State& state, std::string name, std::string ran
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// Random access (seed, index, dim) as a renderer calls it: Sobol' with
+// hash-based Owen scrambling, indices below 2^16, 16 dimensions. "bound"
+// binds the scrambler to a dimension once per dimension (pbrt-v4 style).
+void sobol_random_access(benchmark::State& state, bool bound) {
+  const unsigned dims = 16;
+  const stratum::Sobol sobol(dims);
+  const stratum::HashOwenScrambler owen(7);
+  std::uint64_t index = 0;
+  double sum = 0;
+  for (auto _ : state) {
+    for (unsigned j = 0; j < dims; ++j) {
+      if (bound) sum += sobol.sample(index, j, owen.dimension(j));
+      else sum += sobol.sample(index, j, owen);
+    }
+    index = (index + 1) & 0xffff;
+  }
+  benchmark::DoNotOptimize(sum);
+  state.counters["ns_per_coord"] =
+      benchmark::Counter(dims, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+// Peer: Boost.Random's Sobol' engine (Gray-code, unscrambled) writing the same
+// buffer as the registry does, converted to double.
+void boost_sobol_bulk(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  for (auto _ : state) {
+    boost::random::sobol engine(kDims);
+    stratum::PointSet buffer = stratum::registry_support::allocate_points(n, kDims);
+    double* out = buffer.data.get();
+    for (std::size_t k = 0; k < n * kDims; ++k) out[k] = static_cast<double>(engine()) * 0x1.0p-32;
+    benchmark::DoNotOptimize(out);
+  }
+  state.counters["ns_per_coord"] = benchmark::Counter(static_cast<double>(n * kDims),
+                                                      benchmark::Counter::kIsIterationInvariantRate |
+                                                          benchmark::Counter::kInvert);
+}
+
 // A count every sampler accepts (a perfect square, fourth power and power of
 // two), large enough to leave the caches.
 constexpr std::int64_t kCount = 1 << 16;
 
 int register_all() {
   benchmark::RegisterBenchmark("baseline/memory-write", memory_write_baseline)->Arg(kCount)->Arg(1 << 20);
+  benchmark::RegisterBenchmark("peer/boost-sobol", boost_sobol_bulk)->Arg(kCount)->Arg(1 << 20);
+  benchmark::RegisterBenchmark("random-access/sobol-owen-hash/seeded", sobol_random_access, false);
+  benchmark::RegisterBenchmark("random-access/sobol-owen-hash/bound", sobol_random_access, true);
+  for (unsigned threads : {1u, 2u})
+    benchmark::RegisterBenchmark(("registry-threads/sobol/owen-hash/" + std::to_string(threads)).c_str(),
+                                 registry_sampler, "sobol", "owen-hash", threads)
+        ->Arg(1 << 20)
+        ->Unit(benchmark::kMicrosecond);
   for (const auto& sampler : stratum::samplers()) {
     for (const auto& randomize : sampler.randomizers) {
       stratum::SamplerRequest probe;
