@@ -21,7 +21,8 @@ PointSet sample_points() {
 class PointsIo : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PointsIo, RoundTripsExactly) {
-  const auto dir = std::filesystem::temp_directory_path() / "stratum_io_test";
+  // One directory per format: ctest runs the cases in parallel.
+  const auto dir = std::filesystem::temp_directory_path() / ("stratum_io_test_" + GetParam());
   std::filesystem::create_directories(dir);
   const auto path = dir / ("points." + GetParam());
   const PointSet points = sample_points();
