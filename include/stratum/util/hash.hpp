@@ -49,11 +49,13 @@ constexpr Real uniform01(std::uint64_t seed, Counters... counters) noexcept {
 template <class... Counters>
 constexpr std::uint64_t uniform_below(std::uint64_t bound, std::uint64_t seed, Counters... counters) noexcept {
   const std::uint64_t key = hash64(seed, static_cast<std::uint64_t>(counters)...);
-  const std::uint64_t threshold = (0 - bound) % bound;
   for (std::uint64_t attempt = 0;; ++attempt) {
     const std::uint64_t word = hash64(key, attempt);
     const unsigned __int128 product = static_cast<unsigned __int128>(word) * bound;
-    if (static_cast<std::uint64_t>(product) >= threshold) return static_cast<std::uint64_t>(product >> 64);
+    const auto low = static_cast<std::uint64_t>(product);
+    // threshold = 2^64 mod bound < bound, so low ≥ bound accepts without the
+    // (slow) division; it is computed only in the rare case low < bound.
+    if (low >= bound || low >= (0 - bound) % bound) return static_cast<std::uint64_t>(product >> 64);
   }
 }
 
