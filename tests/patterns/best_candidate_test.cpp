@@ -6,28 +6,15 @@
 #include <cmath>
 #include <vector>
 
+#include "brute_distance.hpp"
+
 #include "stratum/patterns/random.hpp"
 
 namespace stratum {
 namespace {
 
-double distance2(const double* a, const double* b, unsigned d, bool periodic) {
-  double sum = 0;
-  for (unsigned j = 0; j < d; ++j) {
-    double delta = std::abs(a[j] - b[j]);
-    if (periodic) delta = std::min(delta, 1 - delta);
-    sum += delta * delta;
-  }
-  return sum;
-}
-
-double min_distance(const std::vector<double>& points, unsigned d, bool periodic) {
-  double best = 1e300;
-  const std::size_t n = points.size() / d;
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b) best = std::min(best, distance2(&points[a * d], &points[b * d], d, periodic));
-  return std::sqrt(best);
-}
+using testing::distance2;
+using testing::min_distance;
 
 // Mitchell's algorithm by brute force, on the same candidate streams: the
 // grids of the real implementation must not change a single choice.

@@ -7,6 +7,8 @@
 #include <set>
 #include <vector>
 
+#include "brute_distance.hpp"
+
 #include "stratum/util/hash.hpp"
 
 namespace stratum {
@@ -18,15 +20,6 @@ std::vector<double> random_points(std::size_t n, unsigned d, std::uint64_t seed)
   return points;
 }
 
-double brute_distance2(const double* a, const double* b, unsigned d, bool periodic) {
-  double sum = 0;
-  for (unsigned j = 0; j < d; ++j) {
-    double delta = std::abs(a[j] - b[j]);
-    if (periodic) delta = std::min(delta, 1 - delta);
-    sum += delta * delta;
-  }
-  return sum;
-}
 
 // Squared distance from point p to the box [lo, hi], by brute force.
 double brute_box_distance2(const double* p, const double* lo, const double* hi, unsigned d, bool periodic) {
@@ -93,7 +86,7 @@ TEST(NeighborGrid, ToroidalDistanceWraps) {
   EXPECT_NEAR(grid.distance_squared(a, b), 0.02, 1e-15);
   NeighborGrid flat(2, 4, false);
   EXPECT_NEAR(flat.distance_squared(a, b), 1.62, 1e-15);
-  EXPECT_EQ(brute_distance2(a, b, 2, true), grid.distance_squared(a, b));
+  EXPECT_EQ(testing::distance2(a, b, 2, true), grid.distance_squared(a, b));
 }
 
 TEST(NeighborGrid, RejectsBadShapes) {
