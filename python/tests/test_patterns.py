@@ -75,13 +75,32 @@ def test_multi_jittered_latin_and_stratified(name, n, params, shape):
     assert np.array_equal(np.sort(flat), np.arange(n))
 
 
-@pytest.mark.parametrize("n", [1, 4, 5, 6, 9, 10, 49, 64, 100])
-def test_n_queens_condition(n):
+@pytest.mark.parametrize("method", ["random", "formula"])
+@pytest.mark.parametrize("n", [1, 4, 5, 6, 7, 8, 9, 10, 49, 64, 100, 1000, 4096])
+def test_n_queens_condition(n, method):
     for seed in range(3):
-        x = stratum.points("n-queens", n, 2, seed=seed)
+        x = stratum.points("n-queens", n, 2, seed=seed, method=method)
         col, row = cells(x[:, 0], n), cells(x[:, 1], n)
         assert len(set(col)) == n and len(set(row)) == n
         assert len(set(col - row)) == n and len(set(col + row)) == n
+
+
+def test_n_queens_random_is_default_deterministic_and_seeded():
+    a = stratum.points("n-queens", 200, 2, seed=5)
+    assert np.array_equal(a, stratum.points("n-queens", 200, 2, seed=5, method="random"))
+    assert np.array_equal(a, stratum.points("n-queens", 200, 2, seed=5, threads=2))
+    b = stratum.points("n-queens", 200, 2, seed=6)
+    assert not np.array_equal(cells(a, 200), cells(b, 200))
+
+
+def test_n_queens_random_is_spread_where_the_formula_is_not():
+    """n = 256: fraction of the 16 x 16 coarse blocks holding a point (formula: 1/8, on two lines)."""
+    def blocks(x):
+        c = cells(x, 16)
+        return len(set(c[:, 0] * 16 + c[:, 1])) / 256
+    for seed in range(5):
+        assert blocks(stratum.points("n-queens", 256, 2, seed=seed, method="formula")) < 0.2
+        assert blocks(stratum.points("n-queens", 256, 2, seed=seed)) > 0.5
 
 
 @pytest.mark.parametrize("method", ["jacobson-matthews", "permuted-cyclic"])
@@ -117,6 +136,8 @@ def test_zaremba_values_and_lower_discrepancy_than_hammersley():
     ("latin-square", 50, 3, {}, ["n = 50", "m^2", "49, 64"]),
     ("multi-jittered", 30, 2, {"strata": "4x8"}, ["n = 30", "strata=4x8"]),
     ("latin-square", 16, 3, {"method": "magic"}, ["method = magic"]),
+    ("n-queens", 16, 2, {"method": "magic"}, ["method = magic", "random or formula"]),
+    ("n-queens", 2 ** 24 + 1, 2, {}, ["n = 16777217", "method=formula"]),
 ])
 def test_bad_counts_name_n_and_the_allowed_values(name, n, d, params, words):
     with pytest.raises(stratum.InvalidArgument) as error:
@@ -129,7 +150,8 @@ def test_unbiased_over_seeds():
     """Mean of 200 seeds' estimates of the integral of exp(x) (1 + y^2) = (e - 1) 4/3,
     two-sided z-test per sampler at Sidak level for family alpha = 0.001."""
     cases = [("jittered", 16, {}), ("n-rooks", 16, {}), ("multi-jittered", 12, {}), ("cmj", 12, {}),
-             ("n-queens", 5, {}), ("grid", 16, {"randomize": "cp"}), ("zaremba", 16, {"randomize": "cp"})]
+             ("n-queens", 5, {"method": "formula"}),
+             ("n-queens", 64, {"randomize": "cp"}), ("grid", 16, {"randomize": "cp"}), ("zaremba", 16, {"randomize": "cp"})]
     from scipy.stats import t as student
     alpha = 1 - (1 - 0.001) ** (1 / len(cases))
     truth = (np.e - 1) * 4 / 3

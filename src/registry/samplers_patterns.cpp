@@ -115,6 +115,13 @@ static MultiJittered multi_jittered_of(const SamplerRequest& request) {
   return MultiJittered::closest_to_square(n, request.seed);
 }
 
+static NQueens::Method n_queens_method(const SamplerRequest& request) {
+  const std::string method = param_text(request, "method").value_or("random");
+  if (method == "random") return NQueens::Method::random;
+  if (method == "formula") return NQueens::Method::formula;
+  throw invalid_argument("method", method, "must be random or formula");
+}
+
 /// Applies the request's randomizer ("none" or "cp") to an index-addressable pattern.
 template <class Pattern>
 static PointSet fill_with_randomizer(const SamplerRequest& request, const Pattern& pattern) {
@@ -274,19 +281,24 @@ std::vector<SamplerInfo> patterns() {
   list.push_back({
       .name = "n-queens",
       .kind = "pattern",
-      .description = "N-queens: one point per row and column of an n x n grid, no two cells on a diagonal; explicit "
-                     "solutions (modular a*i+b when gcd(n,6)=1, else Hoffman-Loessi-Moore 1969), a random symmetry "
-                     "of the square, jittered in the cells",
+      .description = "N-queens: one point per row and column of an n x n grid, no two cells on a diagonal; a random "
+                     "solution by conflict-reducing swaps from a random permutation (Sosic, Gu 1990), or explicit "
+                     "solutions with method=formula (a*i+b mod n when gcd(n,6)=1, else Hoffman-Loessi-Moore 1969); "
+                     "a random symmetry of the square, jittered in the cells",
       .min_dim = 2,
       .max_dim = 2,
       .properties = {"Latin in x and y", "no two points in a diagonal of cells",
-                     "unbiased when gcd(n,6)=1 or with cp"},
+                     "unbiased with cp (method=formula: also when gcd(n,6)=1)"},
       .randomizers = {"none", "cp"},
-      .counts = "n = 1 or n >= 4 (no n-queens solution exists for n = 2, 3)",
-      .params = {},
-      .validate = [](const SamplerRequest& request) { NQueens(*request.n, request.seed); },
+      .counts = "n = 1 or n >= 4 (no n-queens solution exists for n = 2, 3); method=random: n <= 2^24",
+      .params = {{"method", "random (local search, well spread) or formula (explicit solutions on a few lines)",
+                  "random"}},
+      .validate = [](const SamplerRequest& request) { NQueens::check(*request.n, n_queens_method(request)); },
       .count = requested_count,
-      .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, NQueens(*request.n, request.seed)); },
+      .generate =
+          [](const SamplerRequest& request) {
+            return fill_with_randomizer(request, NQueens(*request.n, request.seed, n_queens_method(request)));
+          },
   });
 
   list.push_back({
