@@ -1,17 +1,24 @@
 /// Registry entries: Sobol' sequence and the (0,2)-sequence (Sobol'
 /// dimensions 0 and 1), with the base-2 digital randomizers.
 ///
-/// Bulk generation walks the sequence in Gray-code order: within a chunk of
-/// rows each coordinate is updated by x ^= step[ctz(i)] (one XOR), and every
-/// chunk starts from a direct computation, so the output is identical for
-/// any thread count. Randomizers are folded in where they are linear (XOR
-/// shift, LMS: the steps themselves are scrambled), hash-based Owen
-/// scrambling walks the bit-reversed words, and the result equals
+/// Bulk generation cuts the index range into aligned blocks of 2^k rows:
+/// point m 2^k + r is base(m) ⊕ low(r), so each block is one flat pass over
+/// an L1-resident table of low(r) (no serial Gray-code chain), and the next
+/// block's base is one XOR per dimension away. Every chunk of rows starts
+/// from a direct computation, so the output is identical for any thread
+/// count. Randomizers are folded in where they are linear (XOR shift, LMS:
+/// the columns themselves are scrambled), hash-based Owen scrambling works
+/// on the bit-reversed words, and the result equals
 /// Sobol::sample(index, dim, randomizer) bit for bit (tests/sequences/sobol_test.cpp).
 #include <algorithm>
 #include <bit>
+#include <numeric>
 #include <string>
 #include <vector>
+
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "families.hpp"
 #include "stratum/randomizers/base2.hpp"
@@ -49,143 +56,275 @@ std::vector<std::uint64_t> transformed_columns(unsigned d, Transform transform) 
   return columns;
 }
 
-// The kernels below are compiled three times (AVX-512, AVX2, baseline x86-64)
-// and picked at load time, so the row loops vectorize where the machine
-// allows it (64-bit multiplies and int64 -> double conversions are AVX-512
-// instructions). Integer steps and exact conversions: every clone gives the
-// same bits.
+/// How rows are cut for the block kernel. Rows come in aligned blocks of
+/// 2^k: block m holds the points x(m 2^k + r) = base(m) ⊕ low(r), r < 2^k,
+/// with base(m) = x(m 2^k) and low(r) = C'·digits(r) (for Gray order
+/// because gray(m 2^k + r) = gray(m 2^k) ⊕ gray(r)). So a block is one flat,
+/// vectorizable pass over a table of 2^k · d words that stays in L1, and
+/// going to the next block is one XOR per dimension (no Gray-code chain).
+/// Within a block, groups of `group_rows` rows (span = group_rows · d words,
+/// a multiple of 8 for d ≤ 256) line up with per-dimension constants tiled
+/// to `span` words: entry t belongs to dimension t mod d. The loops over a
+/// group are then whole vectors for any d, d = 2, 3 or 5 included.
+struct Layout {
+  unsigned d = 0;
+  unsigned log_block = 0;     // k ≥ 1
+  std::uint64_t block = 0;    // 2^k rows, a multiple of group_rows
+  std::size_t span = 0;       // words of a group: a multiple of lcm(d, 8), ≥ 64, for d ≤ 256; else d
+  unsigned group_rows = 0;    // span / d
+};
+
+Layout layout_for(unsigned d) {
+  Layout layout;
+  layout.d = d;
+  layout.span = d <= 256 ? std::lcm(std::size_t{d}, std::size_t{8}) : d;
+  if (d <= 256)
+    while (layout.span < 64) layout.span *= 2;  // inner loops of 8 vectors or more
+  layout.group_rows = static_cast<unsigned>(layout.span / d);
+  constexpr std::uint64_t table_words = 2048;  // 16 KiB of low(r)
+  const std::uint64_t rows = std::max<std::uint64_t>({2, layout.group_rows, std::bit_floor(table_words / d)});
+  layout.log_block = static_cast<unsigned>(std::countr_zero(rows));
+  layout.block = rows;
+  return layout;
+}
+
+template <class T>
+std::vector<T> tiled(const std::vector<T>& per_dimension, std::size_t span) {
+  const std::size_t d = per_dimension.size();
+  std::vector<T> tiles(span, per_dimension.front());
+  for (std::size_t t = 0; t < span; ++t) tiles[t] = per_dimension[t % d];
+  return tiles;
+}
+
+// The group loops below are compiled three times (AVX-512, AVX2, baseline
+// x86-64) and picked at load time, so they vectorize where the machine allows
+// it (64-bit multiplies and int64 -> double conversions are AVX-512
+// instructions); hash-based Owen scrambling has a hand-written AVX-512 loop
+// besides (GFNI bit reversal). Integer steps and exact conversions: every
+// version gives the same bits.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 #define STRATUM_SOBOL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define STRATUM_SOBOL_CLONES
 #endif
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define STRATUM_SOBOL_AVX512 1
+#else
+#define STRATUM_SOBOL_AVX512 0
+#endif
 
-/// Coordinates per block of the walk: a block's states are collected row by
-/// row, then turned into output in one flat loop, which vectorizes for any d
-/// (d = 2 included). Per-dimension constants are tiled to the block's length.
-constexpr unsigned block_coordinates = 1024;
-unsigned block_rows(unsigned d) { return std::max(1u, block_coordinates / d); }
-
-/// What turns walk states into output coordinates; per-dimension constants
-/// are tiled: entry k belongs to dimension k mod d (block_rows(d) · d entries).
+/// What turns states (unscrambled words, or bit-reversed ones for owen_hash)
+/// into output coordinates. Each table has `span` entries, tiled.
 struct Finish {
-  enum Kind { plain, owen_hash, rotate } kind = plain;
-  const HashOwenScrambler::Dimension* owen = nullptr;  // owen_hash: states are bit-reversed words
+  enum Kind { plain, owen_hash, rotate, owen } kind = plain;
+  const std::uint64_t* addend = nullptr;               // owen_hash
+  const std::uint64_t* multiplier = nullptr;           // owen_hash
   const double* shift = nullptr;                       // rotate: Cranley-Patterson shifts
+  const OwenScrambler::Dimension* owen_dims = nullptr;  // owen (exact)
+
+  /// The output for state x of tile entry t.
+  double operator()(std::uint64_t x, std::size_t t) const noexcept {
+    switch (kind) {
+      case plain: return bits_to_double(x);
+      case owen_hash:
+        return bits_to_double(reverse_bits64(HashOwenScrambler::scramble_reversed(x, addend[t], multiplier[t])));
+      case rotate: return rotated(x, shift[t]);
+      case owen: return bits_to_double(owen_dims[t](x));
+    }
+    return 0;
+  }
+  /// CranleyPattersonRotation::operator() with its shift hashed once per
+  /// dimension; the wrap is a select, not a branch (it is a coin flip).
+  static double rotated(std::uint64_t x, double shift) noexcept {
+    const double sum = bits_to_double(x) + shift;
+    const double wrapped = sum >= 1.0 ? sum - 1.0 : sum;
+    return wrapped < one_minus_epsilon_double ? wrapped : one_minus_epsilon_double;
+  }
 };
 
-template <class T>
-std::vector<T> tiled(const std::vector<T>& per_dimension) {
-  const std::size_t d = per_dimension.size();
-  std::vector<T> tiles(block_rows(static_cast<unsigned>(d)) * d, per_dimension.front());
-  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k] = per_dimension[k % d];
-  return tiles;
-}
-
-/// Rows [begin, end) from the states x at row `begin` (x ^= steps[ctz(start
-/// + i)] before row i). `states` holds block_rows(d) · d words.
+/// out[g + t] = finish(tile[t] ⊕ low[g + t], t) for g = 0, span, .., words − span.
 STRATUM_SOBOL_CLONES
-void walk_rows(const Finish& finish, std::uint64_t* __restrict x, std::uint64_t* __restrict states,
-               const std::uint64_t* __restrict steps, unsigned d, std::uint64_t start, std::uint64_t begin,
-               std::uint64_t end, double* __restrict out) {
-  const std::uint64_t rows_per_block = block_rows(d);
-  for (std::uint64_t i = begin; i < end; i += rows_per_block) {
-    const std::uint64_t rows = std::min(rows_per_block, end - i);
-    const std::uint64_t first = i == begin ? 1 : 0;  // row `begin` needs no step
-    if (d < 8) {  // few dimensions: walk each one down the block, no short inner loops
-      for (unsigned j = 0; j < d; ++j) {
-        std::uint64_t xj = x[j];
-        if (first) states[j] = xj;
-        for (std::uint64_t r = first; r < rows; ++r) {
-          xj ^= steps[static_cast<std::size_t>(std::countr_zero(start + i + r)) * d + j];
-          states[r * d + j] = xj;
-        }
-        x[j] = xj;
-      }
-    } else {
-      if (first)
-        for (unsigned j = 0; j < d; ++j) states[j] = x[j];
-      for (std::uint64_t r = first; r < rows; ++r) {
-        const std::uint64_t* __restrict step = steps + static_cast<std::size_t>(std::countr_zero(start + i + r)) * d;
-        std::uint64_t* __restrict row = states + r * d;
-        for (unsigned j = 0; j < d; ++j) row[j] = x[j] ^= step[j];
-      }
+void finish_groups(const Finish& finish, const std::uint64_t* __restrict tile, const std::uint64_t* __restrict low,
+                   std::size_t words, std::size_t span, double* __restrict out) {
+  switch (finish.kind) {
+    case Finish::plain:
+      for (std::size_t g = 0; g < words; g += span)
+        for (std::size_t t = 0; t < span; ++t) out[g + t] = bits_to_double(tile[t] ^ low[g + t]);
+      break;
+    case Finish::owen_hash: {
+      const std::uint64_t* __restrict addend = finish.addend;
+      const std::uint64_t* __restrict multiplier = finish.multiplier;
+      for (std::size_t g = 0; g < words; g += span)
+        for (std::size_t t = 0; t < span; ++t)
+          out[g + t] = bits_to_double(
+              reverse_bits64(HashOwenScrambler::scramble_reversed(tile[t] ^ low[g + t], addend[t], multiplier[t])));
+      break;
     }
-    const std::size_t count = rows * d;
-    double* __restrict o = out + i * d;
-    if (finish.kind == Finish::plain) {
-      for (std::size_t k = 0; k < count; ++k) o[k] = bits_to_double(states[k]);
-    } else if (finish.kind == Finish::owen_hash) {
-      const HashOwenScrambler::Dimension* __restrict owen = finish.owen;
-      for (std::size_t k = 0; k < count; ++k)
-        o[k] = bits_to_double(reverse_bits64(owen[k].scramble_reversed(states[k])));
-    } else {
-      // CranleyPattersonRotation::operator() with its shift hashed once per
-      // dimension; the wrap is a select, not a branch (it is a coin flip).
+    case Finish::rotate: {
       const double* __restrict shift = finish.shift;
-      for (std::size_t k = 0; k < count; ++k) {
-        const double rotated = bits_to_double(states[k]) + shift[k];
-        const double wrapped = rotated >= 1.0 ? rotated - 1.0 : rotated;
-        o[k] = wrapped < one_minus_epsilon_double ? wrapped : one_minus_epsilon_double;
-      }
+      for (std::size_t g = 0; g < words; g += span)
+        for (std::size_t t = 0; t < span; ++t) out[g + t] = Finish::rotated(tile[t] ^ low[g + t], shift[t]);
+      break;
     }
+    case Finish::owen:
+      for (std::size_t g = 0; g < words; g += span)
+        for (std::size_t t = 0; t < span; ++t) out[g + t] = finish(tile[t] ^ low[g + t], t);
+      break;
   }
 }
 
+#if STRATUM_SOBOL_AVX512
+/// Words from..span − 1 of each group, which the vector loop leaves (d > 256).
+[[gnu::noinline]] void finish_tails(const Finish& finish, const std::uint64_t* tile, const std::uint64_t* low,
+                                    std::size_t words, std::size_t span, std::size_t from, double* out) {
+  for (std::size_t g = 0; g < words; g += span)
+    for (std::size_t t = from; t < span; ++t) out[g + t] = finish(tile[t] ^ low[g + t], t);
+}
+
+/// finish_groups for owen_hash with AVX-512 and GFNI: eight words per step,
+/// the bit reversal is a GF(2) affine map on each byte (reverse its bits)
+/// plus a byte shuffle (reverse the bytes of each word).
+__attribute__((target("avx512f,avx512dq,avx512bw,gfni"))) void owen_hash_groups_gfni(
+    const Finish& finish, const std::uint64_t* __restrict tile, const std::uint64_t* __restrict low, std::size_t words,
+    std::size_t span, double* __restrict out) {
+  const __m512i k1 = _mm512_set1_epi64(static_cast<long long>(HashOwenScrambler::k1));
+  const __m512i k2 = _mm512_set1_epi64(static_cast<long long>(HashOwenScrambler::k2));
+  const __m512i k3 = _mm512_set1_epi64(static_cast<long long>(HashOwenScrambler::k3));
+  const __m512i reverse_byte_bits = _mm512_set1_epi64(0x8040201008040201LL);
+  // Byte b of each word takes byte 7 − b of the same word.
+  const long long high = 0x08090a0b0c0d0e0fLL, low_bytes = 0x0001020304050607LL;
+  const __m512i reverse_bytes = _mm512_set_epi64(high, low_bytes, high, low_bytes, high, low_bytes, high, low_bytes);
+  const __m512d unit = _mm512_set1_pd(0x1.0p-53);
+  const std::uint64_t* __restrict addend = finish.addend;
+  const std::uint64_t* __restrict multiplier = finish.multiplier;
+  const std::size_t vector_span = span / 8 * 8;
+  for (std::size_t g = 0; g < words; g += span)
+    for (std::size_t t = 0; t < vector_span; t += 8) {
+      __m512i r = _mm512_xor_si512(_mm512_loadu_si512(tile + t), _mm512_loadu_si512(low + g + t));
+      r = _mm512_xor_si512(r, _mm512_mullo_epi64(r, k1));
+      r = _mm512_add_epi64(r, _mm512_loadu_si512(addend + t));
+      r = _mm512_mullo_epi64(r, _mm512_loadu_si512(multiplier + t));
+      r = _mm512_xor_si512(r, _mm512_mullo_epi64(r, k2));
+      r = _mm512_xor_si512(r, _mm512_mullo_epi64(r, k3));
+      r = _mm512_shuffle_epi8(_mm512_gf2p8affine_epi64_epi8(r, reverse_byte_bits, 0), reverse_bytes);
+      // (The maskz shift: the plain one trips GCC 12's -Wuninitialized.)
+      _mm512_storeu_pd(out + g + t, _mm512_mul_pd(_mm512_cvtepi64_pd(_mm512_maskz_srli_epi64(0xff, r, 11)), unit));
+    }
+  if (vector_span != span) finish_tails(finish, tile, low, words, span, vector_span, out);
+}
+
+bool has_avx512_gfni() {
+  static const bool supported = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                                __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("gfni");
+  return supported;
+}
+#endif
+
+/// The precomputed tables of one request: low(r) for r < 2^k, and carry[c]:
+/// base(m) ⊕ base(m − 1) when m has c trailing zeros.
+struct Tables {
+  Layout layout;
+  std::vector<std::uint64_t> low;    // [r * d + j]
+  std::vector<std::uint64_t> carry;  // [c * d + j], c < 64 − k
+};
+
+/// Writes rows [row, row + count) of block m (rows r0.. of it), whose base
+/// is tiled in `tile`; `out` points at row `row`.
+void block_rows(const Tables& tables, const Finish& finish, const std::uint64_t* tile, std::uint64_t r0,
+                std::uint64_t count, double* out) {
+  const Layout& layout = tables.layout;
+  const unsigned d = layout.d;
+  const std::uint64_t* low = tables.low.data() + r0 * d;
+  auto scalar_rows = [&](std::uint64_t first, std::uint64_t rows) {
+    for (std::uint64_t q = first; q < first + rows; ++q)
+      for (unsigned j = 0; j < d; ++j) out[q * d + j] = finish(tile[j] ^ low[q * d + j], j);
+  };
+  // Rows before the first whole group and after the last one go one by one.
+  const std::uint64_t lead = std::min<std::uint64_t>(count, (layout.group_rows - r0 % layout.group_rows) % layout.group_rows);
+  const std::uint64_t groups = (count - lead) / layout.group_rows;
+  scalar_rows(0, lead);
+  if (groups != 0) {
+    const std::size_t words = groups * layout.span;
+    const std::uint64_t* group_low = low + lead * d;
+    double* group_out = out + lead * d;
+#if STRATUM_SOBOL_AVX512
+    if (finish.kind == Finish::owen_hash && has_avx512_gfni())
+      owen_hash_groups_gfni(finish, tile, group_low, words, layout.span, group_out);
+    else
+#endif
+      finish_groups(finish, tile, group_low, words, layout.span, group_out);
+  }
+  scalar_rows(lead + groups * layout.group_rows, count - lead - groups * layout.group_rows);
+}
+
 /// Fills n × d points: state_j(i) = offset_j ⊕ (C'_j · digits(start + i)),
-/// where C'_j has the given columns; rows(x, steps, begin, end, out) turns
-/// the states at row `begin` into rows [begin, end). Each chunk of rows
-/// starts from this direct computation, so any thread count gives the same
-/// points.
-template <class Rows>
+/// where C'_j has the given columns, then out = finish(state). Each chunk of
+/// rows starts from a direct computation, so any thread count gives the
+/// same points.
 PointSet walk(const SamplerRequest& request, Sobol::Order order, const std::vector<std::uint64_t>& columns,
-              const std::vector<std::uint64_t>& offsets, const Rows& rows) {
+              const std::vector<std::uint64_t>& offsets, const Finish& finish, const Layout& layout) {
   const unsigned d = request.d;
   const std::uint64_t start = request.start;
-  // steps[c * d + j]: XORed into state j when the next index has c trailing zeros.
+  const unsigned k = layout.log_block;
+  // steps[c * d + j]: XORed into state j when the next index has c trailing
+  // zeros (column c in Gray order, columns 0..c in natural order).
   std::vector<std::uint64_t> steps(columns);
   if (order == Sobol::Order::natural)
     for (unsigned c = 1; c < Sobol::columns; ++c)
       for (unsigned j = 0; j < d; ++j) steps[std::size_t{c} * d + j] ^= steps[std::size_t{c - 1} * d + j];
+  Tables tables{layout, std::vector<std::uint64_t>(layout.block * d, 0),
+                std::vector<std::uint64_t>(std::size_t{Sobol::columns - k} * d)};
+  for (std::uint64_t r = 1; r < layout.block; ++r)
+    for (unsigned j = 0; j < d; ++j)
+      tables.low[r * d + j] = tables.low[(r - 1) * d + j] ^ steps[std::size_t(std::countr_zero(r)) * d + j];
+  // From block m − 1 to m: digits(m 2^k) ⊕ digits((m − 1) 2^k) are bits
+  // k + c and k − 1 (Gray), bits k..k + c (natural): steps[k + c] ⊕ steps[k − 1].
+  for (unsigned c = 0; c + k < Sobol::columns; ++c)
+    for (unsigned j = 0; j < d; ++j)
+      tables.carry[std::size_t{c} * d + j] = steps[std::size_t{k + c} * d + j] ^ steps[std::size_t{k - 1} * d + j];
 
   PointSet points = allocate_points(*request.n, d);
   double* out = points.data.get();
   parallel_rows(*request.n, request.threads, [&](std::uint64_t begin, std::uint64_t end) {
-    std::vector<std::uint64_t> state(offsets);
-    const std::uint64_t index = start + begin;
-    const std::uint64_t digits = order == Sobol::Order::gray ? Sobol::gray_code(index) : index;
+    std::uint64_t index = start + begin;
+    std::uint64_t m = index >> k;
+    std::vector<std::uint64_t> base(offsets);
+    const std::uint64_t digits = order == Sobol::Order::gray ? Sobol::gray_code(m << k) : m << k;
     for (std::uint64_t rest = digits; rest != 0; rest &= rest - 1) {
       const std::uint64_t* column = &columns[static_cast<std::size_t>(std::countr_zero(rest)) * d];
-      for (unsigned j = 0; j < d; ++j) state[j] ^= column[j];
+      for (unsigned j = 0; j < d; ++j) base[j] ^= column[j];
     }
-    rows(state.data(), steps.data(), begin, end, out);
+    std::vector<std::uint64_t> tile(layout.span);
+    for (std::uint64_t row = begin;;) {
+      for (std::size_t t = 0, j = 0; t < layout.span; ++t, j = j + 1 == d ? 0 : j + 1) tile[t] = base[j];
+      const std::uint64_t r0 = index & (layout.block - 1);
+      const std::uint64_t count = std::min(layout.block - r0, end - row);
+      block_rows(tables, finish, tile.data(), r0, count, out + row * d);
+      row += count;
+      index += count;
+      if (row == end) break;
+      ++m;  // index = m 2^k ≤ start + n − 1 < 2^64: m ≥ 1, so c < 64 − k
+      const std::uint64_t* carry = &tables.carry[static_cast<std::size_t>(std::countr_zero(m)) * d];
+      for (unsigned j = 0; j < d; ++j) base[j] ^= carry[j];
+    }
   });
   return points;
-}
-
-/// rows() for walk_rows with a given finish.
-auto vector_rows(const SamplerRequest& request, const Finish& finish) {
-  return [&request, finish](std::uint64_t* x, const std::uint64_t* steps, std::uint64_t begin, std::uint64_t end,
-                            double* out) {
-    std::vector<std::uint64_t> states(std::size_t{block_rows(request.d)} * request.d);
-    walk_rows(finish, x, states.data(), steps, request.d, request.start, begin, end, out);
-  };
 }
 
 PointSet generate_sobol(const SamplerRequest& request) {
   const unsigned d = request.d;
   const Sobol::Order order = parse_order(request);
+  const Layout layout = layout_for(d);
   const std::string& randomize = request.randomize;
   const auto identity = [](unsigned, std::uint64_t word) { return word; };
   const std::vector<std::uint64_t> zeros(d, 0);
-  const auto plain = vector_rows(request, Finish{});
 
-  if (randomize == "none") return walk(request, order, transformed_columns(d, identity), zeros, plain);
+  if (randomize == "none") return walk(request, order, transformed_columns(d, identity), zeros, Finish{}, layout);
   if (randomize == "xor") {  // the shift commutes with the walk: start from it
     const DigitalShift shift(request.seed);
     std::vector<std::uint64_t> offsets(d);
     for (unsigned j = 0; j < d; ++j) offsets[j] = shift.shift(j);
-    return walk(request, order, transformed_columns(d, identity), offsets, plain);
+    return walk(request, order, transformed_columns(d, identity), offsets, Finish{}, layout);
   }
   if (randomize == "lms") {  // L is linear: walk with scrambled columns from the shift
     const LinearMatrixScramble lms(request.seed);
@@ -196,39 +335,36 @@ PointSet generate_sobol(const SamplerRequest& request) {
       offsets[j] = dims[j].shift();
     }
     const auto columns = transformed_columns(d, [&](unsigned j, std::uint64_t word) { return dims[j].linear(word); });
-    return walk(request, order, columns, offsets, plain);
+    return walk(request, order, columns, offsets, Finish{}, layout);
   }
   if (randomize == "owen-hash") {  // walk the bit-reversed words, scramble, reverse once
     const HashOwenScrambler owen(request.seed);
-    std::vector<HashOwenScrambler::Dimension> dims;
-    for (unsigned j = 0; j < d; ++j) dims.push_back(owen.dimension(j));
-    const auto tiles = tiled(dims);
+    std::vector<std::uint64_t> addends(d), multipliers(d);
+    for (unsigned j = 0; j < d; ++j) {
+      addends[j] = owen.dimension(j).addend();
+      multipliers[j] = owen.dimension(j).multiplier();
+    }
+    const auto addend_tiles = tiled(addends, layout.span), multiplier_tiles = tiled(multipliers, layout.span);
     const auto reversed = [](unsigned, std::uint64_t word) { return reverse_bits64(word); };
     return walk(request, order, transformed_columns(d, reversed), zeros,
-                vector_rows(request, Finish{.kind = Finish::owen_hash, .owen = tiles.data()}));
+                Finish{.kind = Finish::owen_hash, .addend = addend_tiles.data(), .multiplier = multiplier_tiles.data()},
+                layout);
   }
   if (randomize == "cp") {
     const CranleyPattersonRotation rotation(request.seed);
     std::vector<double> shifts(d);
     for (unsigned j = 0; j < d; ++j) shifts[j] = rotation.shift(j);
-    const auto tiles = tiled(shifts);
+    const auto tiles = tiled(shifts, layout.span);
     return walk(request, order, transformed_columns(d, identity), zeros,
-                vector_rows(request, Finish{.kind = Finish::rotate, .shift = tiles.data()}));
+                Finish{.kind = Finish::rotate, .shift = tiles.data()}, layout);
   }
   if (randomize == "owen") {  // 64 hashes per coordinate: scalar
     const OwenScrambler owen(request.seed);
     std::vector<OwenScrambler::Dimension> dims;
     for (unsigned j = 0; j < d; ++j) dims.push_back(owen.dimension(j));
+    const auto tiles = tiled(dims, layout.span);
     return walk(request, order, transformed_columns(d, identity), zeros,
-                [&](std::uint64_t* x, const std::uint64_t* steps, std::uint64_t begin, std::uint64_t end, double* out) {
-                  for (std::uint64_t i = begin;;) {
-                    for (unsigned j = 0; j < d; ++j) out[i * d + j] = bits_to_double(dims[j](x[j]));
-                    if (++i == end) break;
-                    const std::uint64_t* step =
-                        steps + static_cast<std::size_t>(std::countr_zero(request.start + i)) * d;
-                    for (unsigned j = 0; j < d; ++j) x[j] ^= step[j];
-                  }
-                });
+                Finish{.kind = Finish::owen, .owen_dims = tiles.data()}, layout);
   }
   throw invalid_argument("randomize", randomize, "unknown to the Sobol generator");
 }

@@ -95,6 +95,54 @@ TEST(Base2, HashOwenTopHalfIsThePublished32BitScramble) {
   }
 }
 
+// Values of the 64-bit hash-based scramble pinned from the implementation
+// before the per-dimension cache existed: dimensions below, at and above
+// HashOwenScrambler::cached_dimensions (16), indices past 2^32.
+TEST(Base2, HashOwenPinnedValuesAcrossTheDimensionCache) {
+  struct Pin {
+    std::uint64_t index;
+    unsigned dim;
+    std::uint64_t scrambled;
+  };
+  const Pin pins[] = {
+      {0ull, 0, 0x4540d111d02f1bdbull},     {1ull, 3, 0xf4e6f43397b86175ull},
+      {77ull, 15, 0x5d92f86095475a77ull},   {77ull, 16, 0x76362a4cfeeaf808ull},
+      {12345ull, 39, 0x6dfd89e21295cf43ull}, {4294967305ull, 17, 0x80dbb8fe36cdf800ull},
+      {~0ull, 1, 0x2acd1ea57b016134ull},
+  };
+  const HashOwenScrambler owen(2024);
+  const Sobol sobol(40);
+  for (const Pin& pin : pins) {
+    const std::uint64_t w = sobol.bits(pin.index, pin.dim);
+    EXPECT_EQ(owen(w, pin.dim), pin.scrambled) << pin.index << " " << pin.dim;
+    EXPECT_EQ(owen.dimension(pin.dim)(w), pin.scrambled);
+    const HashOwenScrambler copy = owen;  // the cache is part of the value
+    EXPECT_EQ(copy(w, pin.dim), pin.scrambled);
+  }
+  static_assert(HashOwenScrambler::cached_dimensions == 16);
+  static_assert(sizeof(HashOwenScrambler) <= 8 + 16 * 16, "cheap to copy: 264 bytes");
+  // Usable in constant expressions (the cache is built by a constexpr constructor).
+  static_assert(HashOwenScrambler(2024).dimension(3).scramble_reversed(1) ==
+                HashOwenScrambler::scramble_reversed(1, HashOwenScrambler(2024).dimension(3).addend(),
+                                                     HashOwenScrambler(2024).dimension(3).multiplier()));
+}
+
+// The static form with explicit constants (what vectorized bulk code runs)
+// is the bound scramble, for cached and derived dimensions; the multiplier is odd.
+TEST(Base2, HashOwenStepsWithExplicitConstantsAreTheBoundScramble) {
+  std::mt19937_64 words(41);
+  const HashOwenScrambler owen(6);
+  for (unsigned dim = 0; dim < 40; ++dim) {
+    const auto bound = owen.dimension(dim);
+    EXPECT_EQ(bound.multiplier() & 1, 1u);
+    EXPECT_EQ(static_cast<std::uint32_t>(bound.addend()), bound.seed32());
+    for (int trial = 0; trial < 20; ++trial) {
+      const std::uint64_t r = words();
+      ASSERT_EQ(HashOwenScrambler::scramble_reversed(r, bound.addend(), bound.multiplier()), bound.scramble_reversed(r));
+    }
+  }
+}
+
 // Exact Owen scrambling applies one flip per tree node: node (depth, higher digits).
 TEST(Base2, OwenFlipsEachDigitByItsNode) {
   std::mt19937_64 words(29);

@@ -335,6 +335,72 @@ TEST(SobolRegistry, BulkEqualsRandomAccess) {
   }
 }
 
+// The bulk generator cuts rows into aligned blocks of 2^k rows (k depends on
+// d) and groups of rows whose words are whole vectors (lcm(d, 8), doubled up
+// to 64 words, for d <= 256; d words above). Dimensions on either side of
+// each switch, starts that are not aligned (or past 2^40), and counts that
+// end inside a block and a group, split over two threads.
+TEST(SobolRegistry, BulkEqualsRandomAccessForEveryBlockLayout) {
+  const std::uint64_t seed = 17;
+  const HashOwenScrambler owen(seed);
+  const DigitalShift shift(seed);
+  for (unsigned d : {1u, 2u, 3u, 4u, 6u, 8u, 9u, 16u, 17u, 63u, 256u, 257u, 300u}) {
+    const std::uint64_t n = std::max<std::uint64_t>(37, 24000 / d + 37);
+    for (const char* order : {"gray", "natural"}) {
+      const Sobol sobol(d, std::string(order) == "gray" ? Sobol::Order::gray : Sobol::Order::natural);
+      for (std::uint64_t start : u64s{0, 7, (std::uint64_t{1} << 40) + 4093}) {
+        const PointSet hashed = registry_points("sobol", n, d, "owen-hash", seed, start, 2, order);
+        const PointSet shifted = registry_points("sobol", n, d, "xor", seed, start, 2, order);
+        for (std::uint64_t i = 0; i < n; ++i)
+          for (unsigned j = 0; j < d; ++j) {
+            ASSERT_EQ(hashed(i, j), sobol.sample(start + i, j, owen)) << "d " << d << " " << order << " start " << start
+                                                                         << " i " << i << " j " << j;
+            ASSERT_EQ(shifted(i, j), sobol.sample(start + i, j, shift)) << "d " << d << " start " << start << " i " << i;
+          }
+      }
+    }
+  }
+}
+
+// FNV-1a over the bits of the doubles, row by row.
+std::uint64_t digest(const PointSet& points) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < points.n; ++i)
+    for (std::size_t j = 0; j < points.d; ++j) {
+      std::uint64_t bits;
+      const double x = points(i, j);
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 0x100000001b3ULL;
+    }
+  return h;
+}
+
+// Bulk output pinned bit for bit: digests computed with random access
+// (Sobol::sample with each randomizer) by the implementation before the
+// block-based bulk generator, for n = 5000 (300 for exact Owen), d = 7,
+// start = 1000003, seed = 31, on one and two threads.
+TEST(SobolRegistry, BulkOutputIsPinned) {
+  struct Pin {
+    const char* order;
+    const char* randomize;
+    std::uint64_t digest;
+  };
+  const Pin pins[] = {
+      {"gray", "none", 0xfecd43438dcf0f85ull},       {"gray", "owen-hash", 0xc916d42d31417e5aull},
+      {"gray", "xor", 0xf6faa991535196feull},        {"gray", "lms", 0xa5f55a514451ab5full},
+      {"gray", "cp", 0xcf7e8d5598904035ull},         {"gray", "owen", 0x4b63b670836ecc10ull},
+      {"natural", "none", 0xf969eb418dcf0f85ull},    {"natural", "owen-hash", 0x814b9ff0724a86faull},
+      {"natural", "xor", 0x634d2a2fabdc5964ull},     {"natural", "lms", 0xd648e5e4d24e2134ull},
+      {"natural", "cp", 0x3095546369d86e95ull},      {"natural", "owen", 0xa2e47770a73e1604ull},
+  };
+  for (const Pin& pin : pins)
+    for (unsigned threads : {1u, 2u}) {
+      const std::uint64_t n = std::string(pin.randomize) == "owen" ? 300 : 5000;
+      EXPECT_EQ(digest(registry_points("sobol", n, 7, pin.randomize, 31, 1000003, threads, pin.order)), pin.digest)
+          << pin.order << " " << pin.randomize << " threads " << threads;
+    }
+}
+
 TEST(SobolRegistry, DefaultIsOwenHashAndZeroTwoIsTheFirstTwoDimensions) {
   SamplerRequest request;
   request.n = 300;

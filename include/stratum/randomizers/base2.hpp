@@ -17,6 +17,9 @@
 /// Speed: a seeded functor derives the dimension's key on every call (one
 /// SplitMix64 round); hot loops bind a dimension once with dimension(dim),
 /// as pbrt-v4 builds FastOwenScrambler(Hash(dim, seed)), and pass that.
+/// HashOwenScrambler, the one meant for random access in renderers, keeps
+/// the bound scramblers of its first 16 dimensions (264 bytes), so that
+/// r(bits, dim) and r.dimension(dim) cost two loads there.
 ///  - DigitalShift: XOR with a random word (the base-2 digital shift).
 ///  - LinearMatrixScramble: random nonsingular lower-triangular binary matrix
 ///    times the digits plus a digital shift (Matoušek 1998, "On the
@@ -29,8 +32,11 @@
 ///    bit-reversed word, with Vegdahl's constants (2021, "Building a better
 ///    LK hash"; pbrt-v4's FastOwenScrambler). See its comment for the 64-bit
 ///    extension.
+#include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "stratum/util/bits.hpp"
 #include "stratum/util/hash.hpp"
@@ -186,34 +192,57 @@ class HashOwenScrambler {
 
     /// The scramble on a bit-reversed word (returns a bit-reversed word).
     constexpr std::uint64_t scramble_reversed(std::uint64_t r) const noexcept {
-      r ^= r * k1;
-      r += add_;
-      r *= multiply_;
-      r ^= r * k2;
-      r ^= r * k3;
-      return r;
+      return HashOwenScrambler::scramble_reversed(r, add_, multiply_);
     }
     constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept {
       return reverse_bits64(scramble_reversed(reverse_bits64(bits)));
     }
     /// The 32-bit seed whose published scramble gives the top 32 digits.
     constexpr std::uint32_t seed32() const noexcept { return static_cast<std::uint32_t>(add_); }
+    /// The dimension's constants in the steps (for bulk code that runs them
+    /// on vectors of words).
+    constexpr std::uint64_t addend() const noexcept { return add_; }
+    constexpr std::uint64_t multiplier() const noexcept { return multiply_; }
 
    private:
     std::uint64_t add_;
     std::uint64_t multiply_;
   };
 
+  /// The steps on a bit-reversed word r with a dimension's addend and
+  /// (odd) multiplier: the whole hash, in one place.
+  static constexpr std::uint64_t scramble_reversed(std::uint64_t r, std::uint64_t addend,
+                                                   std::uint64_t multiplier) noexcept {
+    r ^= r * k1;
+    r += addend;
+    r *= multiplier;
+    r ^= r * k2;
+    r ^= r * k3;
+    return r;
+  }
+
+  /// Dimensions whose bound scrambler is kept (computed at construction);
+  /// dimension(dim) derives the others on each call.
+  static constexpr unsigned cached_dimensions = 16;
+
   explicit constexpr HashOwenScrambler(std::uint64_t seed) noexcept
-      : base_(hash64(seed, 0x6f68617368ULL /* "ohash" */)) {}
+      : base_(hash64(seed, 0x6f68617368ULL /* "ohash" */)),
+        cache_(bind_first(base_, std::make_index_sequence<cached_dimensions>{})) {}
 
   constexpr Dimension dimension(unsigned dim) const noexcept {
-    return Dimension(base2_detail::dimension_key(base_, dim));
+    return dim < cached_dimensions ? cache_[dim] : Dimension(base2_detail::dimension_key(base_, dim));
   }
   constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
 
  private:
+  template <std::size_t... dims>
+  static constexpr std::array<Dimension, sizeof...(dims)> bind_first(std::uint64_t base,
+                                                                     std::index_sequence<dims...>) noexcept {
+    return {Dimension(base2_detail::dimension_key(base, static_cast<unsigned>(dims)))...};
+  }
+
   std::uint64_t base_;
+  std::array<Dimension, cached_dimensions> cache_;
 };
 
 }  // namespace stratum

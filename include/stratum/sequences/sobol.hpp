@@ -27,7 +27,9 @@
 /// every call). The same tables exist for the bit-reversed columns, so that
 /// hash-based Owen scrambling, which works on reversed words, needs one bit
 /// reversal per sample instead of two. Memory: 9 KiB per dimension. Bulk
-/// generation should use the Gray-code step x_{i+1} = x_i ⊕ step(i + 1).
+/// generation should use the Gray-code step x_{i+1} = x_i ⊕ step(i + 1), or
+/// aligned blocks, x(m·2^k + r) = x(m·2^k) ⊕ C·digits(r) for r < 2^k (in
+/// both orders), which vectorize (src/registry/samplers_sobol.cpp).
 #include <bit>
 #include <boost/random/detail/sobol_table.hpp>
 #include <concepts>
