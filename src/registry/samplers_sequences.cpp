@@ -61,7 +61,10 @@ static PointSet fill_by_columns(std::uint64_t n, unsigned d, unsigned threads, c
   return points;
 }
 
-static const std::vector<std::string> radical_inverse_randomizers = {"permute", "none", "owen", "xor", "cp"};
+/// A function, not a namespace-scope vector: samplers() may be called during
+/// another translation unit's static initialization (the benchmarks register
+/// at start-up), before such a vector would be constructed.
+static std::vector<std::string> radical_inverse_randomizers() { return {"permute", "none", "owen", "xor", "cp"}; }
 
 /// fill_by_columns for a per-value sample(index, dim).
 template <class SampleFn>
@@ -138,7 +141,7 @@ std::vector<SamplerInfo> sequences() {
       .max_dim = Halton::max_dimensions,
       .properties = {"index-addressable", "progressive", "low-discrepancy",
                      "mixed-base elementary intervals (none, permute, owen, xor)"},
-      .randomizers = radical_inverse_randomizers,
+      .randomizers = radical_inverse_randomizers(),
       .counts = "any n >= 1",
       .params = {},
       .validate = nullptr,
@@ -155,7 +158,7 @@ std::vector<SamplerInfo> sequences() {
       .max_dim = Hammersley::max_dimensions,
       .properties = {"low-discrepancy", "Latin in dimension 0",
                      "elementary intervals at N = b^k (none, permute, owen, xor)"},
-      .randomizers = radical_inverse_randomizers,
+      .randomizers = radical_inverse_randomizers(),
       .counts = "any n >= 1",
       .params = {},
       .validate = nullptr,
