@@ -6,11 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "error_of.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum {
 namespace {
+
+using testing::error_of;
 
 SamplerRequest request_of(std::uint64_t n, unsigned d, std::uint64_t seed = 1) {
   SamplerRequest request;
@@ -18,16 +21,6 @@ SamplerRequest request_of(std::uint64_t n, unsigned d, std::uint64_t seed = 1) {
   request.d = d;
   request.seed = seed;
   return request;
-}
-
-// The message of the invalid_argument thrown by generate_points (empty if none).
-std::string error_of(const std::string& name, const SamplerRequest& request) {
-  try {
-    generate_points(name, request);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(PatternRegistry, EntriesExistWithTheRightKind) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "error_of.hpp"
 #include "stratum/patterns/best_candidate.hpp"
 #include "stratum/patterns/poisson_disk.hpp"
 #include "stratum/registry.hpp"
@@ -12,6 +13,8 @@
 namespace stratum {
 namespace {
 
+using testing::error_of;
+
 SamplerRequest request_of(std::optional<std::uint64_t> n, unsigned d, std::optional<double> radius = std::nullopt) {
   SamplerRequest request;
   request.n = n;
@@ -19,15 +22,6 @@ SamplerRequest request_of(std::optional<std::uint64_t> n, unsigned d, std::optio
   request.seed = 3;
   request.radius = radius;
   return request;
-}
-
-std::string error_of(const std::string& name, const SamplerRequest& request) {
-  try {
-    generate_points(name, request);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "";
 }
 
 double min_distance(const PointSet& points) {

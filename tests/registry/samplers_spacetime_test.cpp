@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "error_of.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/spacetime/cook_pattern.hpp"
 #include "stratum/spacetime/magic_square.hpp"
@@ -20,14 +21,7 @@ SamplerRequest request_of(std::uint64_t n) {
   return request;
 }
 
-std::string error_of(const std::string& name, std::uint64_t n) {
-  try {
-    generate_points(name, request_of(n));
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::string& name, std::uint64_t n) { return testing::error_of(name, request_of(n)); }
 
 // Point i = (row, column) lies in its stratum and in the slot the table gives.
 void expect_in_slots(const PointSet& points, const SlotTable& table) {
