@@ -18,7 +18,6 @@ using namespace registry_support;
 
 namespace {
 
-std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
 
 /// Korobov search limit: n x d point-coordinates per candidate.
 constexpr std::uint64_t search_limit = std::uint64_t{1} << 26;

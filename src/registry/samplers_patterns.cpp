@@ -20,7 +20,6 @@ namespace stratum::registry_families {
 
 using namespace registry_support;
 
-static std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
 
 /// "4x8" (or "4,8") → {4, 8}; every part a positive integer.
 static std::vector<std::uint64_t> parse_strata(const std::string& text) {

@@ -25,7 +25,7 @@ std::vector<SamplerInfo> pmj() {
       .counts = "any n >= 1 (every power-of-two prefix is a (0,k,2)-net)",
       .params = {},
       .validate = nullptr,
-      .count = [](const SamplerRequest& request) -> std::optional<std::uint64_t> { return request.n; },
+      .count = requested_count,
       .generate =
           [](const SamplerRequest& request) {
             const Pmj02 pmj(request.d, request.seed);

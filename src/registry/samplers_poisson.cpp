@@ -16,7 +16,6 @@ using namespace registry_support;
 
 namespace {
 
-std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
 
 unsigned candidates_param(const SamplerRequest& request, unsigned fallback, unsigned limit) {
   const std::int64_t value = param_int(request, "candidates").value_or(fallback);

@@ -30,7 +30,6 @@ namespace stratum::registry_families {
 
 using namespace registry_support;
 
-static std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
 
 /// The first `count` primes: Halton's bases.
 static std::vector<std::uint32_t> prime_bases(unsigned count) {

@@ -378,7 +378,6 @@ void validate_order(const SamplerRequest& request) { parse_order(request); }
 
 std::vector<SamplerInfo> sobol() {
   std::vector<SamplerInfo> list;
-  const auto requested_count = [](const SamplerRequest& request) -> std::optional<std::uint64_t> { return request.n; };
 
   list.push_back({
       .name = "sobol",

@@ -18,7 +18,6 @@ using namespace registry_support;
 
 namespace {
 
-std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
 
 // m with m² = n, or 0 when n is not a perfect square (or too large).
 std::uint32_t square_root(std::uint64_t n) {

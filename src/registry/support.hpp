@@ -40,6 +40,9 @@ PointSet fill_index_addressable(std::uint64_t n, unsigned d, unsigned threads, c
   return points;
 }
 
+/// SamplerInfo::count for samplers that return exactly the requested n.
+inline std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
+
 /// n is a power of two?
 constexpr bool is_power_of_two(std::uint64_t n) { return n != 0 && (n & (n - 1)) == 0; }
 
