@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "stratum/plot.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/util/error.hpp"
 
@@ -72,7 +72,7 @@ void run_converge(const ConvergeOptions& o) {
   request.threads = static_cast<unsigned>(o.threads);
   const sa::ConvergenceResult result = sa::run_convergence(request);
   const nlohmann::json data = to_json(result);
-  if (!o.plot.empty()) write_plot("converge", data, o.plot);
+  if (!o.plot.empty()) plot::write_plot("converge", data, o.plot);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("integrand {} (d = {}), exact {:.17g}, {} runs per N\n", result.integrand, result.d, result.exact,
              result.runs);

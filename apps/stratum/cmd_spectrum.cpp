@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "stratum/plot.hpp"
 #include "stratum/analysis/spectrum.hpp"
 #include "stratum/io/read_points.hpp"
 #include "stratum/registry.hpp"
@@ -87,7 +87,7 @@ void run_spectrum(const SpectrumOptions& o) {
                          {"oscillation_window", {figures.oscillation_from, figures.oscillation_to}},
                          {"oscillation_window_is_cut", figures.window_is_cut},
                          {"power", p.power}};
-  if (!o.png.empty()) write_plot("spectrum", data, o.png);
+  if (!o.png.empty()) plot::write_plot("spectrum", data, o.png);
   if (o.json) {
     fmt::print("{}\n", data.dump(2));
     return;

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "stratum/plot.hpp"
 #include "stratum/analysis/dimension_study.hpp"
 #include "stratum/util/error.hpp"
 
@@ -75,7 +75,7 @@ void run_dimension(const DimensionOptions& o) {
   request.threads = static_cast<unsigned>(o.threads);
   const sa::DimensionStudy study = sa::run_dimension_study(request);
   const nlohmann::json data = to_json(study);
-  if (!o.plot.empty()) write_plot("dimension", data, o.plot);
+  if (!o.plot.empty()) plot::write_plot("dimension", data, o.plot);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("{} rule vs Monte Carlo on {}, {} runs per (d, N); errors: product |Q - I|, MC and Sobol' RMSE\n",
              study.rule, study.integrand, study.runs);

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "stratum/plot.hpp"
 #include "stratum/analysis/importance_study.hpp"
 #include "stratum/util/error.hpp"
 
@@ -70,7 +70,7 @@ void run_importance(const ImportanceOptions& o) {
   const sa::ImportanceStudy study = sa::run_importance_study(request);
   const nlohmann::json data = {{"runs", study.runs}, {"samples", study.samples},
                                {"hemisphere", to_json(study.hemisphere)}, {"light", to_json(study.light)}};
-  if (!o.plot.empty()) write_plot("importance", data, o.plot);
+  if (!o.plot.empty()) plot::write_plot("importance", data, o.plot);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("irradiance at a point (normal +z), {} runs x {} samples per method; variances per sample\n", study.runs,
              study.samples);

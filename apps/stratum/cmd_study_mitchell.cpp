@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "stratum/plot.hpp"
 #include "stratum/analysis/mitchell_study.hpp"
 #include "stratum/util/error.hpp"
 
@@ -61,7 +61,7 @@ void run_mitchell(const MitchellOptions& options) {
   study_options.threads = static_cast<unsigned>(options.threads);
   const auto study = analysis::run_mitchell_study(study_options);
   const nlohmann::json data = to_json(study);
-  if (!options.plot.empty()) write_plot("mitchell", data, options.plot);
+  if (!options.plot.empty()) plot::write_plot("mitchell", data, options.plot);
   if (options.json) fmt::print("{}\n", data.dump(2));
   else fmt::print("{}", analysis::mitchell_table(study));
 }

@@ -12,6 +12,7 @@ void add_discrepancy_command(CLI::App& app);  // cmd_discrepancy.cpp
 void add_spectrum_command(CLI::App& app);     // cmd_spectrum.cpp
 void add_render_command(CLI::App& app);       // cmd_render.cpp (only with the renderer built)
 void add_compare_command(CLI::App& app);      // cmd_compare.cpp (only with the renderer built)
+void add_report_command(CLI::App& app);       // cmd_report.cpp (only with the renderer built)
 /// `stratum study NAME`: each study adds itself under the `study` command.
 void add_study_mitchell_command(CLI::App& study);    // cmd_study_mitchell.cpp
 void add_study_dimension_command(CLI::App& study);   // cmd_study_dimension.cpp

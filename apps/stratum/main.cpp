@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   stratum::cli::add_render_command(app);
   stratum::cli::add_compare_command(app);
 #endif
+#ifdef STRATUM_HAS_REPORT
+  stratum::cli::add_report_command(app);
+#endif
   auto* study = app.add_subcommand("study", "Reproduce a study of the lecture (see `stratum study --help`)");
   study->require_subcommand(1);
   stratum::cli::add_study_mitchell_command(*study);

@@ -8,4 +8,10 @@ void bind_measures(pybind11::module_& m);  // measures.cpp: measure, measures, s
 void bind_spectra(pybind11::module_& m);   // spectra.cpp: periodogram, radial power, anisotropy
 void bind_studies(pybind11::module_& m);   // studies.cpp: integrands, integrate, converge, studies
 void bind_mitchell(pybind11::module_& m);  // mitchell.cpp: study_mitchell
+#ifdef STRATUM_HAS_RENDER
+void bind_render(pybind11::module_& m);    // render.cpp: render, compare (renderer built only)
+#endif
+#ifdef STRATUM_HAS_REPORT
+void bind_report(pybind11::module_& m);    // report.cpp: report, report_sections
+#endif
 }  // namespace stratum::python

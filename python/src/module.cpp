@@ -69,4 +69,10 @@ PYBIND11_MODULE(_stratum, m) {
   stratum::python::bind_spectra(m);
   stratum::python::bind_studies(m);
   stratum::python::bind_mitchell(m);
+#ifdef STRATUM_HAS_RENDER
+  stratum::python::bind_render(m);
+#endif
+#ifdef STRATUM_HAS_REPORT
+  stratum::python::bind_report(m);
+#endif
 }

@@ -14,15 +14,18 @@ import numbers
 from . import _stratum
 from ._stratum import InvalidArgument
 
-from . import measures as _measures, mitchell as _mitchell, spectra as _spectra, studies as _studies, warps as _warps
+from . import measures as _measures, mitchell as _mitchell, render as _render, report as _report, spectra as _spectra
+from . import studies as _studies, warps as _warps
 from .measures import *  # noqa: F401,F403  discrepancy and the other measures of point sets
 from .mitchell import *  # noqa: F401,F403  study_mitchell
+from .render import *  # noqa: F401,F403  render, compare (when the renderer is built)
+from .report import *  # noqa: F401,F403  report, report_sections (when the renderer is built)
 from .spectra import *  # noqa: F401,F403  spectrum
 from .studies import *  # noqa: F401,F403  integrands, integrate, converge, studies
 from .warps import *  # noqa: F401,F403  warp, warp_pdf, warp_invert
 
 __all__ = ["samplers", "randomizers", "points", "InvalidArgument", "qmc"] + (
-    _measures.__all__ + _mitchell.__all__ + _spectra.__all__ + _studies.__all__ + _warps.__all__)
+    _measures.__all__ + _mitchell.__all__ + _render.__all__ + _report.__all__ + _spectra.__all__ + _studies.__all__ + _warps.__all__)
 
 
 def __getattr__(name):

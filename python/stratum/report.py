@@ -1,0 +1,24 @@
+"""The lecture reproduced as one HTML page (LECTURE.md §1–13), as `stratum report`."""
+from __future__ import annotations
+
+from . import _stratum
+
+__all__ = ["report", "report_sections"] if hasattr(_stratum, "report") else []
+
+
+def report_sections() -> list[dict]:
+    """Every section of the report: id, lecture (the LECTURE.md section) and title."""
+    return _stratum.report_sections()
+
+
+def report(directory: str = "report", quick: bool = False, samplers=(), only=(), threads: int = 0, seed: int = 1,
+           cache: str = ".stratum-cache", verbose: bool = False) -> dict:
+    """Writes DIRECTORY/index.html, report.json and figures/; returns
+    {"index": path, "seconds": s, "numbers": {section id: measurements}}.
+
+    samplers: extra registry samplers ("name" or "name:randomizer") added to
+    the pattern comparisons; only: section ids to run (default all).
+    Raises stratum.InvalidArgument on bad options, before any work."""
+    index, numbers, seconds = _stratum.report(str(directory), bool(quick), list(samplers), list(only), int(threads),
+                                              int(seed), str(cache), bool(verbose))
+    return {"index": index, "seconds": seconds, "numbers": numbers}

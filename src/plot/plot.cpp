@@ -1,0 +1,172 @@
+#include "stratum/plot.hpp"
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <algorithm>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "stratum/plot_scripts.hpp"
+#include "stratum/util/error.hpp"
+
+namespace stratum::plot {
+
+namespace {
+
+std::string_view find_script(std::string_view name) {
+  for (const auto& [key, text] : plot_scripts)
+    if (key == name) return text;
+  throw std::logic_error("no plot script named " + std::string(name));
+}
+
+/// A file removed when it goes out of scope (unless released).
+struct TemporaryFile {
+  std::string path;
+  ~TemporaryFile() {
+    if (!path.empty()) std::remove(path.c_str());
+  }
+};
+
+std::string make_temporary(const std::string& pattern_prefix, const std::string& suffix) {
+  std::string pattern = pattern_prefix + "XXXXXX" + suffix;
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back('\0');
+  const int fd = mkstemps(buffer.data(), static_cast<int>(suffix.size()));
+  if (fd < 0) return {};
+  close(fd);
+  return std::string(buffer.data());
+}
+
+pid_t start_python(const std::vector<std::string>& arguments) {
+  const char* configured = std::getenv("STRATUM_PYTHON");
+  const std::string python = configured && *configured ? configured : "/usr/bin/python3";
+  std::vector<char*> argv;
+  argv.push_back(const_cast<char*>(python.c_str()));
+  for (const auto& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error(std::string("plot: cannot start Python: ") + std::strerror(errno));
+  if (child == 0) {
+    execv(python.c_str(), argv.data());
+    std::fprintf(stderr, "stratum: cannot run %s: %s\n", python.c_str(), std::strerror(errno));
+    _exit(127);
+  }
+  return child;
+}
+
+int wait_python(pid_t child) {
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error("plot: lost the Python process");
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/// Runs a list of plot jobs in one interpreter, so matplotlib is imported
+/// once: argv[1] is a JSON list of {script, data, out}.
+constexpr std::string_view batch_driver = R"stratum_py(
+import json, runpy, sys, traceback
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+failed = 0
+for job in json.load(open(sys.argv[1])):
+    sys.argv = [job["script"], job["data"], job["out"]]
+    try:
+        runpy.run_path(job["script"], run_name="__main__")
+    except SystemExit as e:
+        failed += e.code not in (0, None)
+    except Exception:
+        traceback.print_exc()
+        failed += 1
+    plt.close("all")
+sys.exit(1 if failed else 0)
+)stratum_py";
+
+/// The temporary files of one job: its script, its data and its figure
+/// (beside the target, so the final rename stays on one file system).
+struct StagedJob {
+  std::string script_name;
+  std::string target;
+  TemporaryFile code, json, figure;
+};
+
+std::unique_ptr<StagedJob> stage(const PlotJob& job) {
+  namespace fs = std::filesystem;
+  const std::string_view text = find_script(job.script);
+  auto staged = std::make_unique<StagedJob>();
+  staged->script_name = job.script;
+  staged->target = job.png;
+  const fs::path target(job.png);
+  const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  staged->figure.path = make_temporary((directory / ("." + target.filename().string() + ".")).string(), ".png");
+  if (staged->figure.path.empty())
+    throw invalid_argument("plot", job.png, std::string("must be a writable path (") + std::strerror(errno) + ")");
+  const std::string temp_dir = fs::temp_directory_path().string();
+  staged->json.path = make_temporary(temp_dir + "/stratum-plot-", ".json");
+  staged->code.path = make_temporary(temp_dir + "/stratum-plot-", ".py");
+  if (staged->json.path.empty() || staged->code.path.empty())
+    throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
+  std::ofstream(staged->json.path) << job.data.dump();
+  std::ofstream(staged->code.path) << text;
+  return staged;
+}
+
+}  // namespace
+
+void write_plot(std::string_view script, const nlohmann::json& data, const std::string& png) {
+  write_plots({PlotJob{std::string(script), data, png}}, 1);
+}
+
+void write_plots(const std::vector<PlotJob>& jobs, unsigned processes) {
+  namespace fs = std::filesystem;
+  if (jobs.empty()) return;
+  std::vector<std::unique_ptr<StagedJob>> staged;
+  for (const auto& job : jobs) staged.push_back(stage(job));
+  processes = std::max(1u, std::min<unsigned>(processes, static_cast<unsigned>(jobs.size())));
+  // Job i goes to process i mod P; each process gets a list file and the driver.
+  const std::string temp_dir = fs::temp_directory_path().string();
+  TemporaryFile driver{make_temporary(temp_dir + "/stratum-plot-", ".py")};
+  if (driver.path.empty()) throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
+  std::ofstream(driver.path) << batch_driver;
+  std::vector<TemporaryFile> lists(processes);
+  std::vector<pid_t> children;
+  for (unsigned p = 0; p < processes; ++p) {
+    nlohmann::json list = nlohmann::json::array();
+    for (std::size_t i = p; i < staged.size(); i += processes)
+      list.push_back({{"script", staged[i]->code.path}, {"data", staged[i]->json.path}, {"out", staged[i]->figure.path}});
+    lists[p].path = make_temporary(temp_dir + "/stratum-plot-", ".json");
+    if (lists[p].path.empty()) throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
+    std::ofstream(lists[p].path) << list.dump();
+  }
+  for (unsigned p = 0; p < processes; ++p) children.push_back(start_python({driver.path, lists[p].path}));
+  int worst = 0;
+  for (const pid_t child : children) worst = std::max(worst, wait_python(child));
+  for (const auto& job : staged) {
+    std::error_code error;
+    if (fs::file_size(job->figure.path, error) == 0 || error)
+      throw std::runtime_error("plot: the matplotlib script '" + job->script_name + "' failed (exit status " +
+                               std::to_string(worst) + "); no figure written for " + job->target);
+  }
+  if (worst != 0) throw std::runtime_error("plot: Python exited with status " + std::to_string(worst));
+  for (auto& job : staged) {
+    // mkstemps made the file private; a figure is for sharing (0644 less the umask).
+    const mode_t mask = umask(0);
+    umask(mask);
+    chmod(job->figure.path.c_str(), 0644 & ~mask);
+    fs::rename(job->figure.path, job->target);
+    job->figure.path.clear();
+  }
+}
+
+}  // namespace stratum::plot

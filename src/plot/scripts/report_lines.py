@@ -1,0 +1,48 @@
+"""Line plots for the report (and any face): panels of series y(x), on log
+or linear axes, with optional error bars and dotted reference curves.
+Data: {"columns": C, "title": "...", "panels": [{"title", "xlabel", "ylabel",
+       "xlog", "ylog", "series": [{"label", "x", "y", "yerr" (optional),
+       "reference" (bool: dotted, no markers)}]}]}
+Usage: python3 report_lines.py DATA.json OUT.png"""
+import json
+import math
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+with open(sys.argv[1]) as handle:
+    data = json.load(handle)
+panels = data["panels"]
+columns = min(data.get("columns", len(panels)), len(panels))
+rows = math.ceil(len(panels) / columns)
+figure, axes_grid = plt.subplots(rows, columns, figsize=(5.0 * columns, 3.8 * rows + 0.4), squeeze=False)
+for index, axes in enumerate(axes_grid.flat):
+    if index >= len(panels):
+        axes.axis("off")
+        continue
+    panel = panels[index]
+    for series in panel["series"]:
+        if series.get("reference", False):
+            axes.plot(series["x"], series["y"], linestyle=":", color="0.4", label=series.get("label"))
+        elif series.get("yerr") is not None:
+            axes.errorbar(series["x"], series["y"], yerr=series["yerr"], marker="o", markersize=3, capsize=2,
+                          label=series.get("label"))
+        else:
+            axes.plot(series["x"], series["y"], marker="o", markersize=3, label=series.get("label"))
+    if panel.get("xlog", False):
+        axes.set_xscale("log")
+    if panel.get("ylog", False):
+        axes.set_yscale("log")
+    axes.set_xlabel(panel.get("xlabel", ""))
+    axes.set_ylabel(panel.get("ylabel", ""))
+    axes.set_title(panel.get("title", ""), fontsize=10)
+    axes.grid(True, which="both", alpha=0.3)
+    if any(series.get("label") for series in panel["series"]):
+        axes.legend(fontsize=8)
+if data.get("title"):
+    figure.suptitle(data["title"])
+figure.tight_layout()
+figure.savefig(sys.argv[2], dpi=data.get("dpi", 90))
