@@ -1,0 +1,44 @@
+"""stratum.report: the lecture page from Python (same sections as `stratum report`)."""
+import json
+
+import pytest
+
+import stratum
+
+pytestmark = pytest.mark.skipif(not hasattr(stratum, "report"), reason="built without the renderer")
+
+
+def test_sections_listed_in_lecture_order():
+    sections = stratum.report_sections()
+    assert sections, "no section"
+    numbers = [int(s["lecture"].lstrip("§")) for s in sections]
+    assert numbers == sorted(numbers)
+    assert len({s["id"] for s in sections}) == len(sections)
+
+
+def test_one_section_writes_page_figures_and_numbers(tmp_path):
+    result = stratum.report(tmp_path / "r", quick=True, only=["disk-maps"], cache=str(tmp_path / "cache"))
+    index = tmp_path / "r" / "index.html"
+    assert result["index"] == str(index) and index.is_file()
+    page = index.read_text()
+    assert 'id="disk-maps"' in page and page.count("<section") == 1
+    figures = list((tmp_path / "r" / "figures").glob("disk-maps-*.png"))
+    assert figures and all(f.read_bytes()[:4] == b"\x89PNG" for f in figures)
+    numbers = result["numbers"]["disk-maps"]
+    # The polar map's strata are less compact than the concentric map's (a
+    # deterministic property of the maps), and P²/4πA ≥ 1 for any region
+    # (the isoperimetric inequality).
+    assert numbers["polar"]["compactness_mean"] > numbers["concentric"]["compactness_mean"] >= 1
+    saved = json.loads((tmp_path / "r" / "report.json").read_text())
+    assert saved["sections"]["disk-maps"]["numbers"] == numbers
+
+
+@pytest.mark.parametrize("kwargs, word", [
+    ({"samplers": ["no-such-sampler"]}, "sampler"),
+    ({"only": ["no-such-section"]}, "only"),
+    ({"threads": 5000}, "threads"),
+])
+def test_bad_options_raise_before_any_work(tmp_path, kwargs, word):
+    with pytest.raises(stratum.InvalidArgument, match=word):
+        stratum.report(tmp_path / "bad", quick=True, **kwargs)
+    assert not (tmp_path / "bad").exists()
