@@ -5,7 +5,11 @@
 // benchmark also times the sweep on the same points and reports
 // `speedup` = peer CPU time / sweep CPU time (thread CPU clocks, so the ratio
 // holds on a loaded machine), and fails if the two values differ.
-// Also: the nested exact method in 3D and Thiémard bounds in 3D.
+// d ≥ 3: the DEM cell decomposition (O(N^{1+d/2})) against the critical-box
+// enumeration (O(N^d)) in the same run, d = 3 and 4: `dem_vs_grid` times DEM
+// as the benchmark and the enumeration once on the same points (thread CPU
+// clocks), reports `speedup` = enumeration / DEM, and fails if the two values
+// differ by a bit. Larger N: DEM alone. Also Thiémard bounds in 3D.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -113,10 +117,49 @@ void star_fenwick_peer(benchmark::State& state) {
   state.counters["speedup"] = peer_seconds / static_cast<double>(runs) / sweep_seconds;
 }
 
-void star_exact_3d(benchmark::State& state) {
+void star_dem_vs_grid(benchmark::State& state, std::size_t d) {
   const auto n = static_cast<std::size_t>(state.range(0));
-  const auto x = uniform_points(n, 3);
-  for (auto _ : state) benchmark::DoNotOptimize(sa::star_discrepancy_grid(sa::PointView{x.data(), n, 3}, 1));
+  const auto x = uniform_points(n, d);
+  const sa::PointView view{x.data(), n, d};
+  double dem = 0, dem_seconds = 0;
+  std::size_t runs = 0;
+  for (auto _ : state) {
+    const double t0 = thread_seconds();
+    benchmark::DoNotOptimize(dem = sa::star_discrepancy_dem(view, 1));
+    dem_seconds += thread_seconds() - t0;
+    ++runs;
+  }
+  const double t0 = thread_seconds();
+  const double grid = sa::star_discrepancy_grid(view, 1);
+  const double grid_seconds = thread_seconds() - t0;
+  if (grid != dem) state.SkipWithError("DEM and the enumeration disagree");
+  state.counters["N"] = static_cast<double>(n);
+  state.counters["dem_s"] = dem_seconds / static_cast<double>(runs);
+  state.counters["grid_s"] = grid_seconds;
+  state.counters["speedup"] = grid_seconds / (dem_seconds / static_cast<double>(runs));
+}
+
+/// The first n Halton points (bases 2, 3, 5, …, index 1 first): a small D*,
+/// so fewer DEM cells are pruned than for random points — the inputs the
+/// size limits (star_dem_max_points) were set on.
+std::vector<double> halton_points(std::size_t n, std::size_t d) {
+  constexpr unsigned bases[] = {2, 3, 5, 7, 11, 13, 17, 19};
+  std::vector<double> x(n * d);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < d; ++j) {
+      double r = 0, f = 1.0 / bases[j];
+      for (std::size_t k = i + 1; k > 0; k /= bases[j], f /= bases[j]) r += f * static_cast<double>(k % bases[j]);
+      x[i * d + j] = r;
+    }
+  return x;
+}
+
+void star_dem(benchmark::State& state, std::size_t d, bool halton) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const auto x = halton ? halton_points(n, d) : uniform_points(n, d);
+  const unsigned threads = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(sa::star_discrepancy_dem(sa::PointView{x.data(), n, d}, threads));
+  state.counters["N"] = static_cast<double>(n);
 }
 
 void star_bounds_3d(benchmark::State& state) {
@@ -133,5 +176,11 @@ void star_bounds_3d(benchmark::State& state) {
 BENCHMARK_CAPTURE(star_exact_2d, threads1, 1u)->RangeMultiplier(2)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(star_exact_2d, threads2, 2u)->RangeMultiplier(4)->Range(1 << 12, 1 << 16)->Unit(benchmark::kMillisecond);
 BENCHMARK(star_fenwick_peer)->RangeMultiplier(2)->Range(1 << 10, 1 << 13)->Unit(benchmark::kMillisecond);
-BENCHMARK(star_exact_3d)->RangeMultiplier(2)->Range(1 << 7, 1 << 10)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem_vs_grid, d3, 3)->RangeMultiplier(2)->Range(1 << 6, 1 << 11)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem_vs_grid, d4, 4)->RangeMultiplier(2)->Range(1 << 4, 1 << 8)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem, d3_random, 3, false)->RangeMultiplier(2)->Range(1 << 12, 1 << 13)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem, d4_random, 4, false)->RangeMultiplier(2)->Range(1 << 9, 1 << 10)->Unit(benchmark::kMillisecond);
+// At the size limits (star_dem_max_points: 14000 for d = 3, 2200 for d = 4).
+BENCHMARK_CAPTURE(star_dem, d3_halton, 3, true)->Arg(4096)->Arg(14000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem, d4_halton, 4, true)->Arg(1024)->Arg(2200)->Unit(benchmark::kMillisecond);
 BENCHMARK(star_bounds_3d)->Arg(1 << 10)->Arg(1 << 12)->Unit(benchmark::kMillisecond);

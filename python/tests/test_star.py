@@ -75,7 +75,7 @@ def test_star_bounds_bracket_exact():
 
 
 def test_star_beyond_exact_limit_gives_bounds_with_warning():
-    x = np.random.default_rng(6).random((40, 6))  # 40^6 > 2e9: auto chooses bounds
+    x = np.random.default_rng(6).random((300, 6))  # 300 > 260, the exact (DEM) limit at d = 6: auto chooses bounds
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         value = stratum.discrepancy(x, method="star")
@@ -92,8 +92,8 @@ def test_star_threads_do_not_change_result():
 @pytest.mark.parametrize(
     "shape,params,message",
     [
-        ((40, 6), {"method": "exact"}, "invalid d = 6"),
-        ((40, 6), {"method": "exact"}, "method=bounds"),
+        ((300, 6), {"method": "exact"}, "invalid d = 6"),
+        ((300, 6), {"method": "exact"}, "method=bounds"),
         ((10, 2), {"method": "fast"}, "invalid method = fast"),
         ((10, 2), {"method": "bounds", "delta": 1.5}, "invalid delta = 1.5"),
         ((10, 2), {"lines": 5}, "invalid parameter = lines"),

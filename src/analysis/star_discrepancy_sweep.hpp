@@ -14,6 +14,10 @@ inline constexpr double kNoValue = -std::numeric_limits<double>::infinity();
 ///   open   = max  weight·a·b − #{x < a, y < b}/N   (a, b from the points' x, y or 1)
 ///   closed = max  #{x ≤ a, y ≤ b}/N − weight·a·b  (a, b from the points' x, y)
 /// `weight` is the volume of the box in the remaining coordinates (1 in 2D).
+/// Each value is rounded as fl(fl(fl(weight·a)·b) − K) or fl(K − fl(fl(weight·a)·b))
+/// with K = fl(count·inv_n), without fused multiply-adds: the DEM method
+/// (star_discrepancy_dem.cpp) rounds the same boxes the same way, so the
+/// exact methods agree to the last bit.
 struct SweepTerms {
   double open = kNoValue;
   double closed = kNoValue;

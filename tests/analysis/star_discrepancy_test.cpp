@@ -1,7 +1,8 @@
 // Star discrepancy: every exact method against an independent brute force
 // that evaluates the definition sup_x |A([0,x))/N − V(x)| on the grid of
 // point coordinates (and 1), at each corner and just above it (the closed
-// limit); closed forms (1D, one point); fast vs slow; thread-count invariance.
+// limit); closed forms (1D, one point); fast vs slow; thread-count invariance;
+// the DEM cell decomposition against the critical-box enumeration, to the bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -203,6 +204,95 @@ TEST(StarDiscrepancy, RandomSetsAreAtLeastHalfOverN) {
     EXPECT_GE(full, sa::star_discrepancy_1d(PointView{first.data(), n, 1}) - 1e-15);
     EXPECT_GE(full, 0.5 / n);
   }
+}
+
+/// Structured sets with ties: repeated rows, coordinates exactly 0 and 1, a
+/// lattice-like set (every point on a shared grid line in some coordinate).
+std::vector<double> tied_points(std::size_t n, std::size_t d, std::uint64_t seed, int kind) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> x = random_points(n, d, seed);
+  switch (kind) {
+    case 0:  // duplicated rows
+      for (std::size_t i = 1; i < n; i += 2)
+        for (std::size_t j = 0; j < d; ++j) x[i * d + j] = x[(i - 1) * d + j];
+      break;
+    case 1:  // about a third of the coordinates at 0, a tenth at 1
+      for (auto& v : x) {
+        const double r = u(rng);
+        v = r < 0.33 ? 0.0 : r > 0.9 ? 1.0 : v;
+      }
+      break;
+    case 2:  // a rank-1 lattice: (i/n, {i·g_j/n}), ties only through the grid
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < d; ++j)
+          x[i * d + j] = static_cast<double>((i * (1 + 2 * j + seed % 5)) % n) / static_cast<double>(n);
+      break;
+    default:  // one coordinate shared by everyone
+      for (std::size_t i = 0; i < n; ++i) x[i * d + seed % d] = 0.5;
+  }
+  return x;
+}
+
+TEST(StarDiscrepancyDem, SameDoubleAsTheEnumeration) {
+  std::size_t checked = 0;
+  for (std::size_t d : {3u, 4u, 5u}) {
+    const std::size_t max_n = d == 3 ? 40 : d == 4 ? 18 : 10;
+    for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+      const std::size_t n = 1 + (seed * 7) % max_n;
+      std::vector<std::vector<double>> sets{random_points(n, d, seed), grid_points(n, d, seed + 500)};
+      for (int kind = 0; kind < 4; ++kind) sets.push_back(tied_points(n, d, seed + 900, kind));
+      for (const auto& x : sets) {
+        const PointView view{x.data(), n, d};
+        const double oracle = sa::star_discrepancy_grid(view, 1);
+        ASSERT_EQ(sa::star_discrepancy_dem(view, 1), oracle) << "n = " << n << " d = " << d << " seed = " << seed;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 3u * 30u * 6u);
+}
+
+TEST(StarDiscrepancyDem, MatchesTheDefinitionByBruteForce) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    for (std::size_t d : {3u, 4u}) {
+      const std::size_t n = d == 3 ? 3 + seed % 12 : 2 + seed % 7;
+      for (const auto& x : {random_points(n, d, seed + 40), grid_points(n, d, seed + 140)}) {
+        EXPECT_NEAR(sa::star_discrepancy_dem(PointView{x.data(), n, d}), brute_force(x, n, d), kBruteTolerance)
+            << "n = " << n << " d = " << d << " seed = " << seed;
+      }
+    }
+  }
+}
+
+TEST(StarDiscrepancyDem, BlockSizeAndThreadsDoNotChangeTheValue) {
+  // block_scale sets how many counted points fall between cuts (so the number
+  // and shape of the cells), never the value.
+  for (std::size_t d : {3u, 4u}) {
+    const std::size_t n = d == 3 ? 300 : 60;
+    const auto x = random_points(n, d, 77 + d);
+    const PointView view{x.data(), n, d};
+    const double oracle = sa::star_discrepancy_grid(view, 2);
+    for (double scale : {0.05, 0.5, 1.0, 4.0, 100.0}) EXPECT_EQ(sa::star_discrepancy_dem(view, 1, scale), oracle);
+    EXPECT_EQ(sa::star_discrepancy_dem(view, 2), oracle);
+    EXPECT_EQ(sa::star_discrepancy_dem(view, 5), oracle);
+  }
+}
+
+TEST(StarDiscrepancyDem, TwoDimensionsAgreeWithTheSweep) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const std::size_t n = 1 + seed * 13;
+    for (const auto& x : {random_points(n, 2, seed), grid_points(n, 2, seed)}) {
+      EXPECT_EQ(sa::star_discrepancy_dem(PointView{x.data(), n, 2}), sa::star_discrepancy_2d(PointView{x.data(), n, 2}));
+    }
+  }
+}
+
+TEST(StarDiscrepancyDem, PointsAtOneCountOnlyInN) {
+  // Every point has a coordinate 1: no box holds any, so D* = 1 (the box [0,1)^d).
+  std::vector<double> x{1.0, 0.2, 0.3, 0.5, 1.0, 0.1, 0.7, 0.7, 1.0};
+  EXPECT_EQ(sa::star_discrepancy_dem(PointView{x.data(), 3, 3}), 1.0);
+  EXPECT_EQ(sa::star_discrepancy_grid(PointView{x.data(), 3, 3}), 1.0);
 }
 
 }  // namespace

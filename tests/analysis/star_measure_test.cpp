@@ -138,19 +138,36 @@ TEST(StarMeasure, BoundsKindWhenAskedOrBeyondTheExactLimit) {
   EXPECT_GE(*r.upper, exact);
   EXPECT_EQ(r.value, *r.upper);
   EXPECT_EQ(r.extras.at("delta"), 0.02);
-  // d = 6, n = 40: 40^6 > 2e9, so auto gives bounds (default delta 0.2 for d = 6).
-  const auto y = random_points(40, 6, 2);
-  const auto auto_result = sa::compute_measure("star", PointView{y.data(), 40, 6}, {});
+  // d = 6, n = 300 > star_dem_max_points(6) = 260, so auto gives bounds
+  // (default delta 0.2 for d = 6); n = 40 is exact.
+  const auto y = random_points(300, 6, 2);
+  const auto auto_result = sa::compute_measure("star", PointView{y.data(), 300, 6}, {});
   EXPECT_EQ(auto_result.kind, "bounds");
   EXPECT_EQ(auto_result.extras.at("delta"), 0.2);
   EXPECT_LE(*auto_result.upper - *auto_result.lower, 0.2 + 1e-12);
   EXPECT_LE(*auto_result.lower, *auto_result.upper);
+  const auto small = sa::compute_measure("star", PointView{y.data(), 40, 6}, {});
+  EXPECT_EQ(small.kind, "exact");
+  EXPECT_EQ(small.value, sa::star_discrepancy_grid(PointView{y.data(), 40, 6}));
+}
+
+TEST(StarMeasure, DemLimitsShrinkWithD) {
+  EXPECT_EQ(sa::star_dem_max_points(3), 14000u);
+  EXPECT_EQ(sa::star_dem_max_points(8), 80u);
+  for (std::size_t d = 4; d <= 20; ++d) EXPECT_LE(sa::star_dem_max_points(d), sa::star_dem_max_points(d - 1)) << d;
+  EXPECT_EQ(sa::star_dem_max_points(9), 53u);   // 53^5.5 ≤ 80^5 < 54^5.5
+  EXPECT_EQ(sa::star_dem_max_points(10), 38u);  // 38^6 ≤ 80^5 < 39^6
+  EXPECT_TRUE(sa::star_exact_feasible(14000, 3));
+  EXPECT_FALSE(sa::star_exact_feasible(14001, 3));
+  EXPECT_THROW(sa::star_dem_max_points(2), stratum::invalid_argument);
 }
 
 TEST(StarMeasure, BadInputNamesTheArgument) {
   const auto x = random_points(30, 8, 3);
-  const std::string too_large = error_of(x, 30, 8, {{"method", "exact"}});
+  const auto wide = random_points(100, 8, 3);  // n = 100 > star_dem_max_points(8) = 80
+  const std::string too_large = error_of(wide, 100, 8, {{"method", "exact"}});
   EXPECT_NE(too_large.find("invalid d = 8"), std::string::npos) << too_large;
+  EXPECT_NE(too_large.find("n <= 80 at d = 8 (here n = 100)"), std::string::npos) << too_large;
   EXPECT_NE(too_large.find("method=bounds"), std::string::npos) << too_large;
   EXPECT_NE(error_of(x, 30, 8, {{"method", "fast"}}).find("invalid method = fast: allowed: auto, exact, bounds"),
             std::string::npos);

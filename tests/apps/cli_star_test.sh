@@ -44,7 +44,7 @@ assert e["kind"] == "exact" and b["kind"] == "bounds", (e, b)
 assert b["lower"] <= e["value"] <= b["upper"], (b, e)
 assert b["upper"] - b["lower"] <= 0.05 + 1e-12 and b["extras"]["delta"] == 0.05, b
 EOF
-"$stratum" discrepancy --sampler random -n 100 -d 7 --measure star | grep -q '^star *in \[' && ok \
+"$stratum" discrepancy --sampler random -n 300 -d 7 --measure star | grep -q '^star *in \[' && ok \
   || fail "d = 7 reports bounds as an interval"
 
 # Threads do not change the result.
@@ -53,8 +53,8 @@ b=$("$stratum" discrepancy --sampler random -n 5000 -d 2 --seed 2 --measure star
 [ "$a" = "$b" ] && ok || fail "threads change the star discrepancy: $a vs $b"
 
 # Bad input.
-expect_error "invalid d = 7" discrepancy --sampler random -n 100 -d 7 --measure star -p method=exact
-expect_error "method=bounds" discrepancy --sampler random -n 100 -d 7 --measure star -p method=exact
+expect_error "invalid d = 7" discrepancy --sampler random -n 300 -d 7 --measure star -p method=exact
+expect_error "method=bounds" discrepancy --sampler random -n 300 -d 7 --measure star -p method=exact
 expect_error "invalid method = fast" discrepancy --sampler random -n 10 --measure star -p method=fast
 expect_error "invalid delta = 2" discrepancy --sampler random -n 10 --measure star -p method=bounds -p delta=2
 expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 --measure star -p lines=5

@@ -24,11 +24,18 @@
 ///    the count given by its rank: O(N²) time with a vectorized scan, O(N)
 ///    memory, parallel over x-slabs (oneTBB; the result is a maximum, so it is
 ///    the same for every thread count). N = 2^16 takes about a second.
-///  - d ≥ 3: the same scan nested in a sweep over each further coordinate
-///    (a direct enumeration of the critical boxes, O(N^d) time), limited to
-///    inputs with N^d ≤ kStarExactMaxWork. This is not the O(N^{1+d/2})
-///    algorithm of Dobkin, Eppstein, Mitchell 1996 ("Computing the
-///    discrepancy with applications to supersampling patterns", ACM TOG 15).
+///  - d ≥ 3: the cell decomposition of Dobkin, Eppstein, Mitchell 1996
+///    ("Computing the discrepancy with applications to supersampling
+///    patterns", ACM TOG 15(4)): the space of upper corners is cut into
+///    O(N^{d/2}) cells, one coordinate at a time, so that in each cell every
+///    point is inside all boxes, outside all, or between the cell's faces in
+///    exactly one coordinate (O(d√N) such points); there the count is a sum
+///    over coordinates and a knapsack over them gives the best box of every
+///    count in O(N): O(N^{1+d/2}) time in all (star_discrepancy_dem.cpp).
+///    Limited to N ≤ star_dem_max_points(d) (about 10 s on one core).
+///  - the direct enumeration of the critical boxes, O(N^d) (the 2D scan nested
+///    in a sweep over each further coordinate), is kept as the slow oracle of
+///    the tests (star_discrepancy_grid); DEM returns the same double.
 ///  - bounds for anything larger: Thiémard 2001 ("An algorithm to compute
 ///    bounds for the star discrepancy", J. Complexity 17) — a δ-partition of
 ///    the cube into boxes [α,β] with V(β) − V(α) ≤ δ; on each box the local
@@ -41,8 +48,14 @@
 
 namespace stratum::analysis {
 
-/// The largest N^d the exact method for d ≥ 3 accepts (a few seconds on one core).
-inline constexpr double kStarExactMaxWork = 2e9;
+/// The largest N the exact method for d ≥ 3 (DEM) accepts in d dimensions:
+/// for d = 3 … 8, 14000, 2200, 650, 260, 140, 80 — about 7 s of CPU time
+/// on one core on the slowest inputs we timed (Halton points, whose small D*
+/// lets fewer cells be pruned than uniform random points; measured on a
+/// loaded 2-core machine; bench/star_bench.cpp times d = 3, 4). Above d = 8 the
+/// largest N with N^{1+d/2} ≤ 80^5, the d = 8 budget (d = 9: 53, timed at
+/// N = 50: 2.8 s; d = 10: 38). Needs d ≥ 3.
+std::size_t star_dem_max_points(std::size_t d);
 /// The largest N the exact 2D sweep accepts (O(N²): about a minute at this N on one core).
 inline constexpr std::size_t kStarExact2dMaxPoints = std::size_t{1} << 18;
 
@@ -59,8 +72,15 @@ double star_discrepancy_2d(const PointView& points, unsigned threads = 1);
 /// sweep (d ≥ 3) ending in the 2D scan. No size limit is applied here.
 double star_discrepancy_grid(const PointView& points, unsigned threads = 1);
 
+/// The exact value by the cell decomposition of Dobkin, Eppstein, Mitchell
+/// 1996 (O(N^{1+d/2}) time, O(dN) memory per thread; see above), for any d ≥ 2.
+/// No size limit is applied here. `block_scale` sets the counted points per cut
+/// (block_scale·√N): it changes the running time, never the value. Returns
+/// the same double as star_discrepancy_grid (both round every box alike).
+double star_discrepancy_dem(const PointView& points, unsigned threads = 1, double block_scale = 1.0);
+
 /// The exact value by the fastest method for this d (1D closed form, 2D sweep,
-/// or the nested sweep). Throws invalid_argument naming d (or n) when the input
+/// or DEM for d ≥ 3). Throws invalid_argument naming d (or n) when the input
 /// is beyond star_exact_feasible, saying that star_discrepancy_bounds can.
 double star_discrepancy_exact(const PointView& points, unsigned threads = 1);
 
