@@ -91,6 +91,25 @@ void boost_sobol_bulk(benchmark::State& state) {
                                                           benchmark::Counter::kInvert);
 }
 
+// The Poisson-disk target: the maximal set at radius 0.01 in the
+// unit square (about 7000 points), through the registry, per set and per
+// coordinate. bench/scipy_compare.py --poisson-rounds puts scipy beside it.
+void poisson_disk_maximal_2d(benchmark::State& state) {
+  stratum::SamplerRequest request;
+  request.d = 2;
+  request.seed = 1;
+  request.radius = 0.01;
+  std::size_t coordinates = 0;
+  for (auto _ : state) {
+    auto points = stratum::generate_points("poisson-disk", request);
+    coordinates = points.n * points.d;
+    benchmark::DoNotOptimize(points.data.get());
+  }
+  state.counters["points"] = static_cast<double>(coordinates / 2);
+  state.counters["ns_per_coord"] = benchmark::Counter(
+      static_cast<double>(coordinates), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 // A count every sampler accepts (a perfect square, fourth power and power of
 // two), large enough to leave the caches.
 constexpr std::int64_t kCount = 1 << 16;
@@ -99,6 +118,7 @@ int register_all() {
   benchmark::RegisterBenchmark("baseline/memory-write", memory_write_baseline)->Arg(kCount)->Arg(1 << 20);
   benchmark::RegisterBenchmark("peer/boost-sobol", boost_sobol_bulk)->Arg(kCount)->Arg(1 << 20);
   benchmark::RegisterBenchmark("random-access/sobol-owen-hash/seeded", sobol_random_access, false);
+  benchmark::RegisterBenchmark("poisson-disk/maximal-2d/r=0.01", poisson_disk_maximal_2d)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("random-access/sobol-owen-hash/bound", sobol_random_access, true);
   for (unsigned threads : {1u, 2u})
     benchmark::RegisterBenchmark(("registry-threads/sobol/owen-hash/" + std::to_string(threads)).c_str(),

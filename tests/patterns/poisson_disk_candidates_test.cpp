@@ -93,5 +93,27 @@ TEST(AnnulusOffset, TableDirectionsHaveUnitLength) {
   }
 }
 
+// The float screen of the batched Bridson kernel approximates the exact
+// candidates within the bound its safety margin assumes (10^-5·2r; see
+// CompactPoissonDisk::grow_plane), for small and large radii alike.
+TEST(AnnulusOffset, FloatScreenIsWithinItsErrorBound) {
+  for (double r : {1e-5, 0.01, 0.3}) {
+    double worst = 0;
+    for (int step = 0; step < 5000; ++step) {
+      const std::uint64_t key = hash64(9, step);
+      const unsigned first = 8 * static_cast<unsigned>(step % 5);
+      floats8 x, y;
+      annulus_offsets_2d_float(static_cast<float>(r), key, first, x, y, unit_circle_256_float());
+      for (unsigned lane = 0; lane < 8; ++lane) {
+        double o[2];
+        annulus_offset_2d(r, key, first + lane, o);
+        worst = std::max(worst, std::hypot(x[lane] - o[0], y[lane] - o[1]));
+      }
+    }
+    EXPECT_LT(worst, 1e-5 * 2 * r) << "r=" << r;
+    EXPECT_GT(worst, 0.0) << "a float screen differs from the double candidates";
+  }
+}
+
 }  // namespace
 }  // namespace stratum::poisson_detail

@@ -30,5 +30,27 @@ TEST(CompactPoissonDisk, TorusWrapsIntoTheCube) {
   EXPECT_EQ(CompactPoissonDisk<3>(1.0, 5, 30, true, 40).generate().size(), 3u);  // torus diameter √3/2 < 1
 }
 
+// The plane's batched Bridson kernels (float screen, eight candidates at a
+// time; portable and AVX2 builds) place exactly the samples that the
+// one-candidate-at-a-time kernel places: the same maximal set, bit for bit,
+// on the square and the torus, for candidate counts that fill the batches
+// or not.
+TEST(CompactPoissonDisk, BatchedKernelsEqualTheSequentialKernel) {
+  for (double radius : {0.008, 0.05})
+    for (bool periodic : {false, true})
+      for (unsigned candidates : {1u, 7u, 30u, 33u})
+        for (std::uint64_t seed : {1ull, 2ull}) {
+          const auto run = [&](BridsonKernel kernel) {
+            return CompactPoissonDisk<2>(radius, seed, candidates, periodic, 40, kernel).generate();
+          };
+          const std::vector<double> sequential = run(BridsonKernel::sequential);
+          ASSERT_GT(sequential.size(), 2u);
+          EXPECT_EQ(run(BridsonKernel::batched), sequential)
+              << "r=" << radius << " periodic=" << periodic << " k=" << candidates << " seed=" << seed;
+          EXPECT_EQ(run(BridsonKernel::fastest), sequential)
+              << "r=" << radius << " periodic=" << periodic << " k=" << candidates << " seed=" << seed;
+        }
+}
+
 }  // namespace
 }  // namespace stratum::poisson_detail

@@ -13,6 +13,8 @@
 /// vector register; only candidates that pass meet the full test, a stencil
 /// of the cells that can hold a sample closer than r (nearest first, the
 /// nearest 3^d without branches), and a sample found there joins the list.
+/// In the plane (the common case) candidates go eight at a time through a
+/// float screen before the exact tests (grow_plane); the set is the same.
 ///
 /// The same grid is Ebeida et al.'s (2012, "A simple algorithm for maximal
 /// Poisson-disk sampling in high dimensions"): a cell with a sample is
@@ -32,11 +34,19 @@
 #include <vector>
 
 #include "stratum/patterns/poisson_disk_candidates.hpp"
+#include "stratum/patterns/poisson_disk_coverage.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum::poisson_detail {
+
+/// Which implementation of Bridson's phase runs. All give the same set,
+/// bit for bit (tested): `sequential` tries one candidate at a time (any
+/// d); in the plane, `batched` screens eight at a time in float vectors
+/// (grow_plane), and `fastest` is `batched` compiled for AVX2 when the CPU
+/// has it (x86-64 with GCC or Clang), else `batched`.
+enum class BridsonKernel { fastest, batched, sequential };
 
 /// Bridson + Ebeida on a one-sample-per-cell grid, for dimension D ≤ 3.
 template <unsigned D>
@@ -59,9 +69,10 @@ class CompactPoissonDisk {
     return std::pow(side, D) * D * sizeof(double);
   }
 
-  CompactPoissonDisk(double radius, std::uint64_t seed, unsigned candidates, bool periodic, unsigned max_refinement)
+  CompactPoissonDisk(double radius, std::uint64_t seed, unsigned candidates, bool periodic, unsigned max_refinement,
+                     BridsonKernel kernel = BridsonKernel::fastest)
       : r_(radius), r2_(radius * radius), seed_(seed), candidates_(candidates), periodic_(periodic),
-        max_refinement_(max_refinement), g_(static_cast<std::int64_t>(cells_per_axis(radius))),
+        max_refinement_(max_refinement), kernel_(kernel), g_(static_cast<std::int64_t>(cells_per_axis(radius))),
         pad_(padding(radius)), side_(g_ + 2 * pad_), a_(1.0 / static_cast<double>(g_)) {
     std::int64_t stride = 1;
     for (unsigned j = 0; j < D; ++j, stride *= side_) stride_[j] = stride;
@@ -84,6 +95,7 @@ class CompactPoissonDisk {
       // Rows: the block, `recent` rejecters, a NaN slot; even length.
       blocker_capacity_ = (block_.size() + recent + 2) / 2 * 2;
       blockers_.resize(blocker_capacity_ * D);
+      shadows_.resize(blocker_capacity_ * D);
     }
     local_.resize(stencil_.size() * D);
     far2_.resize(stencil_.size());
@@ -101,6 +113,8 @@ class CompactPoissonDisk {
 
  private:
   static constexpr double sentinel = 1e30;  // "no sample": far from everything
+  /// grow_plane's safety margin, relative to r², for float distances.
+  static constexpr double shadow_margin = 4e-4;
 
   std::int64_t cell_index(const std::int64_t* c) const noexcept {
     std::int64_t index = 0;
@@ -211,17 +225,169 @@ class CompactPoissonDisk {
     return (any[0] | any[1]) != 0;
   }
 
-  // Phase 1: Bridson's annulus dart throwing.
-  void grow() {
-    const std::array<double, 512>& circle = unit_circle_256();
-    double x[D], offset[D];
+  // Bridson's first sample, uniform in the cube; returns the active list.
+  std::vector<std::uint32_t> start() {
+    double x[D];
     std::int64_t c[D];
     for (unsigned j = 0; j < D; ++j) {
       x[j] = uniform01(seed_, tag_first, j);
       c[j] = axis_cell(x[j]);
     }
     add(x, c);
-    std::vector<std::uint32_t> active{0};
+    return {0};
+  }
+
+  // A candidate x moved into the cube (on the torus), and its cell.
+  void wrap(const double* x, double* wrapped, std::int64_t* c) const noexcept {
+    for (unsigned j = 0; j < D; ++j) {
+      wrapped[j] = x[j];
+      if (periodic_) {
+        wrapped[j] -= std::floor(wrapped[j]);
+        if (wrapped[j] >= 1.0) wrapped[j] = 0.0;  // -tiny wraps to 1 after rounding
+      }
+      c[j] = axis_cell(wrapped[j]);
+    }
+  }
+
+  // Coordinate of the image of a sample `hit` (found near the wrapped
+  // candidate) nearest to the unwrapped candidate x.
+  double nearest_image(double hit, double x, double wrapped) const noexcept {
+    double image = hit + (x - wrapped);
+    if (periodic_) image -= std::nearbyint(image - x);
+    return image;
+  }
+
+  // Phase 1, Bridson's annulus dart throwing, with the kernel asked for.
+  void grow() {
+    if constexpr (D == 2) {
+      if (kernel_ != BridsonKernel::sequential) {
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+        if (kernel_ == BridsonKernel::fastest && __builtin_cpu_supports("avx2")) return grow_plane_avx2();
+#endif
+        return grow_plane();
+      }
+    }
+    grow_sequential();
+  }
+
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+  // AVX2 without FMA: the exact tests and the double candidates inlined
+  // here must round as grow_sequential's do, which contraction into fused
+  // multiply-adds would change.
+  [[gnu::target("avx2")]] void grow_plane_avx2() { grow_plane(); }
+#endif
+
+  // Phase 1 in the plane, eight candidates at a time. A step lists the
+  // samples of the cells around p (which shadow most of its annulus) as
+  // float offsets from p, draws eight candidates in float
+  // (annulus_offsets_2d_float) and tests them against every listed sample
+  // at once, one vector operation per sample for the eight. A candidate
+  // whose squared distance to a listed sample is below r²·(1 - 4·10^-4) in
+  // float is surely closer than r: offsets err by less than 10^-5·2r
+  // (annulus_offsets_2d_float), so squared distances below r² err by less
+  // than 5·10^-5·r² (offsets from p keep errors relative to r, whatever r
+  // is). Every other candidate, in order, is drawn again in double exactly
+  // as grow_sequential draws it and meets the exact tests (the cube, then
+  // is_free); if a sample rejects it, that sample joins the list and
+  // shadows the batch's later candidates too. A candidate is thus placed
+  // iff grow_sequential would place it, and the first one placed is the
+  // same: the sets are equal bit for bit. Most steps retire their point
+  // after k failures, and then every batch is usually shut by the screen
+  // alone: no double arithmetic, no grid look-up.
+  [[gnu::always_inline]] inline void grow_plane() {
+    static_assert(D == 2);
+    using floats8 = float __attribute__((vector_size(32)));
+    using mask8 = int __attribute__((vector_size(32)));
+    const std::array<double, 512>& circle = unit_circle_256();
+    const std::array<float, 512>& circle_float = unit_circle_256_float();
+    std::int64_t c[2];
+    std::vector<std::uint32_t> active = start();
+    const std::uint64_t step_key = hash64(seed_, tag_candidate);
+    const std::size_t capacity = blocker_capacity_;
+    float* const wx = shadows_.data();
+    float* const wy = wx + capacity;
+    const float surely2 = static_cast<float>(r2_ * (1 - shadow_margin));
+    const float r_float = static_cast<float>(r_);
+    const mask8 lane_index = {0, 1, 2, 3, 4, 5, 6, 7};
+    const auto open_lanes = [](const mask8& shut) {
+      unsigned open = 0;
+      for (unsigned lane = 0; lane < 8; ++lane) open |= unsigned(shut[lane] == 0) << lane;
+      return open;
+    };
+    for (std::uint64_t step = 0; !active.empty(); ++step) {
+      const std::uint64_t key = hash64(step_key, step);
+      const std::size_t pick = uniform_below(active.size(), key, tag_pick);
+      const double* p_row = points_.data() + std::size_t(active[pick]) * 2;
+      const double p[2] = {p_row[0], p_row[1]};
+      for (unsigned j = 0; j < 2; ++j) c[j] = axis_cell(p[j]);
+      const std::int64_t centre = cell_index(c);
+      std::size_t count = 0;
+      for (const std::int64_t offset_index : block_) {
+        const double* q = cell(centre + offset_index);
+        wx[count] = static_cast<float>(q[0] - p[0]);
+        wy[count] = static_cast<float>(q[1] - p[1]);
+        count += q[0] != sentinel;
+      }
+      bool placed = false;
+      for (unsigned first = 0; first < candidates_ && !placed; first += 8) {
+        floats8 ox, oy;
+        annulus_offsets_2d_float(r_float, key, first, ox, oy, circle_float);
+        // Lanes that cannot take a sample: past the last candidate, or
+        // surely closer than r to a listed sample.
+        mask8 shut = lane_index >= static_cast<int>(candidates_ - first);
+        for (std::size_t b = 0; b < count; ++b) {
+          const floats8 dx = wx[b] - ox, dy = wy[b] - oy;
+          shut |= dx * dx + dy * dy < surely2;
+        }
+        std::uint64_t words[4];  // all shut (lanes are 0 or -1): the usual case
+        std::memcpy(words, &shut, sizeof words);
+        if ((words[0] & words[1] & words[2] & words[3]) == ~std::uint64_t{0}) continue;
+        for (unsigned open = open_lanes(shut); open != 0; open &= open_lanes(shut)) {
+          const unsigned lane = static_cast<unsigned>(__builtin_ctz(open));
+          shut[lane] = -1;
+          double offset[2], unwrapped[2], wrapped[2];
+          annulus_offset_2d(r_, key, first + lane, offset, circle);
+          bool inside = true;
+          for (unsigned j = 0; j < 2; ++j) {
+            unwrapped[j] = p[j] + offset[j];
+            if (!periodic_) inside &= (unwrapped[j] >= 0.0) & (unwrapped[j] < 1.0);
+          }
+          if (!inside) continue;
+          wrap(unwrapped, wrapped, c);
+          double hit[2];
+          if (is_free(wrapped, cell_index(c), hit)) {
+            active.push_back(static_cast<std::uint32_t>(points_.size() / 2));
+            add(wrapped, c);
+            placed = true;
+            break;
+          }
+          // The rejecter, as its image nearest to this candidate, shadows
+          // the later candidates too.
+          float image[2];
+          for (unsigned j = 0; j < 2; ++j)
+            image[j] = static_cast<float>(nearest_image(hit[j], unwrapped[j], wrapped[j]) - p[j]);
+          if (count < capacity) {
+            wx[count] = image[0];
+            wy[count] = image[1];
+            ++count;
+          }
+          const floats8 dx = image[0] - ox, dy = image[1] - oy;
+          shut |= dx * dx + dy * dy < surely2;
+        }
+      }
+      if (!placed) {
+        active[pick] = active.back();
+        active.pop_back();
+      }
+    }
+  }
+
+  // Phase 1, one candidate at a time (any d).
+  void grow_sequential() {
+    const std::array<double, 512>& circle = unit_circle_256();
+    double x[D], offset[D];
+    std::int64_t c[D];
+    std::vector<std::uint32_t> active = start();
     const std::uint64_t step_key = hash64(seed_, tag_candidate);
     for (std::uint64_t step = 0; !active.empty(); ++step) {
       // One hash per step keys both the pick and the candidates.
@@ -259,22 +425,11 @@ class CompactPoissonDisk {
         }
         if (!inside || blocked(x, count, capacity)) continue;
         double wrapped[D];
-        for (unsigned j = 0; j < D; ++j) {
-          wrapped[j] = x[j];
-          if (periodic_) {
-            wrapped[j] -= std::floor(wrapped[j]);
-            if (wrapped[j] >= 1.0) wrapped[j] = 0.0;  // -tiny wraps to 1 after rounding
-          }
-          c[j] = axis_cell(wrapped[j]);
-        }
+        wrap(x, wrapped, c);
         double hit[D];
         if (!is_free(wrapped, cell_index(c), hit)) {
           // Remember the rejecter, as its image nearest to the unwrapped x.
-          for (unsigned j = 0; j < D; ++j) {
-            double image = hit[j] + (x[j] - wrapped[j]);
-            if (periodic_) image -= std::nearbyint(image - x[j]);
-            blockers_[j * capacity + next_recent] = image;
-          }
+          for (unsigned j = 0; j < D; ++j) blockers_[j * capacity + next_recent] = nearest_image(hit[j], x[j], wrapped[j]);
           if (next_recent == count) {
             ++count;
             for (unsigned j = 0; j < D; ++j) blockers_[j * capacity + count] = std::numeric_limits<double>::quiet_NaN();
@@ -293,6 +448,28 @@ class CompactPoissonDisk {
     }
   }
 
+  // Does one sample of the nearest 3^D cells contain the whole cell at lo?
+  // Most empty cells are covered so (no farther sample can cover a cell
+  // alone), and this settles them without listing the stencil. The test is
+  // covered()'s single-disk test, operation for operation, so it answers
+  // as covered() would for these samples.
+  bool covered_by_neighbour(const double* lo, std::int64_t base) const noexcept {
+    constexpr std::size_t block = D == 1 ? 3 : D == 2 ? 9 : D == 3 ? 27 : 81;
+    const std::size_t first = std::min(block, stencil_.size());
+    const double half = sides_[0] / 2;
+    bool any = false;
+    for (std::size_t k = 0; k < first; ++k) {
+      const double* q = cell(base + stencil_[k]);
+      double far2 = 0;
+      for (unsigned j = 0; j < D; ++j) {
+        const double gap = std::abs((lo[j] + half) - q[j]) + half;
+        far2 += gap * gap;
+      }
+      any |= far2 <= r2_;
+    }
+    return any;
+  }
+
   // Is the box [lo, lo + side] inside the union of the disks of the listed
   // samples? Exact tests, so the answer "yes" is always right: one disk
   // covers the box when its farthest corner is within r; two disks p, q
@@ -306,13 +483,12 @@ class CompactPoissonDisk {
     const std::size_t n = local_size_, capacity = stencil_.size();
     double* far2 = far2_.data();
     // Farthest-corner distances, coordinate by coordinate (vectorizes).
-    std::fill(far2, far2 + n, 0.0);
     for (unsigned j = 0; j < D; ++j) {
       const double centre = lo[j] + half;
       const double* column = local_.data() + j * capacity;
       for (std::size_t k = 0; k < n; ++k) {
         const double gap = std::abs(centre - column[k]) + half;
-        far2[k] += gap * gap;
+        far2[k] = (j == 0 ? 0.0 : far2[k]) + gap * gap;
       }
     }
     bool any = false;
@@ -332,89 +508,9 @@ class CompactPoissonDisk {
     double site[3][D];
     for (unsigned i = 0; i < 3; ++i)
       for (unsigned j = 0; j < D; ++j) site[i][j] = local_[j * capacity + rank[i]];
-    if (pair_covers(lo, side, site[0], site[1])) return true;
-    if constexpr (D == 2) return n >= 3 && triple_covers(lo, side, site);
+    if (pair_covers<D>(lo, side, site[0], site[1], r2_)) return true;
+    if constexpr (D == 2) return n >= 3 && triple_covers(lo, side, site, r2_);
     return false;
-  }
-
-  // Three disks cover a square when no candidate for the farthest point of
-  // the square from the sites is farther than r from all three: the
-  // corners, where a pair's bisector crosses an edge, and the sites'
-  // circumcentre (the Voronoi vertex) when it lies in the square. The
-  // distance to the nearest site is convex on each Voronoi cell, so its
-  // maximum over the square is at a vertex of the cells clipped to it.
-  bool triple_covers(const double* lo, double side, const double (*site)[D]) const noexcept {
-    static_assert(D == 2);
-    const auto too_far = [&](double x, double y) {
-      double nearest = sentinel;
-      for (unsigned i = 0; i < 3; ++i)
-        nearest = std::min(nearest, (x - site[i][0]) * (x - site[i][0]) + (y - site[i][1]) * (y - site[i][1]));
-      return nearest > r2_;
-    };
-    const double hi[2] = {lo[0] + side, lo[1] + side};
-    for (unsigned corner = 0; corner < 4; ++corner)
-      if (too_far(corner & 1u ? hi[0] : lo[0], corner & 2u ? hi[1] : lo[1])) return false;
-    double n[3][2], b[3];  // bisector of sites a and a+1: n·x = b
-    for (unsigned k = 0; k < 3; ++k) {
-      const double* p = site[k];
-      const double* q = site[(k + 1) % 3];
-      n[k][0] = q[0] - p[0];
-      n[k][1] = q[1] - p[1];
-      b[k] = (q[0] * q[0] + q[1] * q[1] - p[0] * p[0] - p[1] * p[1]) / 2;
-      for (unsigned e = 0; e < 2; ++e) {
-        if (n[k][0] != 0) {  // crossing the edge y = lo or hi
-          const double y = e ? hi[1] : lo[1], x = (b[k] - n[k][1] * y) / n[k][0];
-          if (x >= lo[0] && x <= hi[0] && too_far(x, y)) return false;
-        }
-        if (n[k][1] != 0) {  // crossing the edge x = lo or hi
-          const double x = e ? hi[0] : lo[0], y = (b[k] - n[k][0] * x) / n[k][1];
-          if (y >= lo[1] && y <= hi[1] && too_far(x, y)) return false;
-        }
-      }
-    }
-    const double det = n[0][0] * n[1][1] - n[0][1] * n[1][0];
-    if (det != 0) {  // the circumcentre: on the bisectors of (0, 1) and (1, 2)
-      const double x = (b[0] * n[1][1] - n[0][1] * b[1]) / det, y = (n[0][0] * b[1] - b[0] * n[1][0]) / det;
-      if (x >= lo[0] && x <= hi[0] && y >= lo[1] && y <= hi[1] && too_far(x, y)) return false;
-    }
-    return true;
-  }
-
-  bool pair_covers(const double* lo, double side, const double* p, const double* q) const noexcept {
-    // Corners.
-    for (unsigned corner = 0; corner < (1u << D); ++corner) {
-      double dp = 0, dq = 0;
-      for (unsigned j = 0; j < D; ++j) {
-        const double x = lo[j] + ((corner >> j) & 1u ? side : 0.0);
-        dp += (x - p[j]) * (x - p[j]);
-        dq += (x - q[j]) * (x - q[j]);
-      }
-      if (std::min(dp, dq) > r2_) return false;
-    }
-    // Bisector n·x = b crossing the edges along axis j.
-    double n[D], b = 0;
-    for (unsigned j = 0; j < D; ++j) {
-      n[j] = q[j] - p[j];
-      b += (q[j] * q[j] - p[j] * p[j]) / 2;
-    }
-    for (unsigned j = 0; j < D; ++j) {
-      if (n[j] == 0) continue;
-      for (unsigned fixed = 0; fixed < (1u << (D - 1)); ++fixed) {
-        double x[D], rest = b;
-        unsigned bit = 0;
-        for (unsigned k = 0; k < D; ++k) {
-          if (k == j) continue;
-          x[k] = lo[k] + ((fixed >> bit++) & 1u ? side : 0.0);
-          rest -= n[k] * x[k];
-        }
-        x[j] = rest / n[j];
-        if (!(x[j] >= lo[j] && x[j] <= lo[j] + side)) continue;
-        double dp = 0;
-        for (unsigned k = 0; k < D; ++k) dp += (x[k] - p[k]) * (x[k] - p[k]);
-        if (dp > r2_) return false;
-      }
-    }
-    return true;
   }
 
   // Is x, a point of the closed current cell, at distance ≥ r from every
@@ -479,9 +575,9 @@ class CompactPoissonDisk {
     const std::size_t capacity = stencil_.size();
     for (;;) {
       const std::int64_t base = cell_index(c);
-      if (!occupied(base)) {
-        Box box{};
-        for (unsigned j = 0; j < D; ++j) box.lo[j] = static_cast<double>(c[j]) * a_;
+      Box box{};
+      for (unsigned j = 0; j < D; ++j) box.lo[j] = static_cast<double>(c[j]) * a_;
+      if (!occupied(base) && !covered_by_neighbour(box.lo, base)) {
         local_size_ = 0;  // branch-free compaction of the stencil's samples
         for (const std::int64_t offset : stencil_) {
           const double* q = cell(base + offset);
@@ -544,6 +640,7 @@ class CompactPoissonDisk {
   unsigned candidates_;
   bool periodic_;
   unsigned max_refinement_;
+  BridsonKernel kernel_;
   std::int64_t g_, pad_, side_;
   double a_;
   std::int64_t stride_[D];
@@ -553,6 +650,7 @@ class CompactPoissonDisk {
   static constexpr std::size_t recent = 8;  // blockers remembered from rejections
   std::vector<std::int64_t> block_;        // offsets of the cells around a parent
   std::vector<double> blockers_;           // a step's blockers, one row per axis
+  std::vector<float> shadows_;             // grow_plane's blockers, offsets from p, one row per axis
   std::size_t blocker_capacity_ = 0;
   std::vector<double> local_;  // samples of the current cell's stencil, one row per axis
   std::size_t local_size_ = 0;
