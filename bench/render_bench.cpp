@@ -4,7 +4,12 @@
 // sampler draws to list exactly the rays the integrator traces; bare Embree
 // then traces that list (rtcIntersect1 for eye rays, rtcOccluded1 for shadow
 // rays) in the same run, on the same number of threads. Counters: rays/s of
-// both, samples/s of the integrator, and their ratio (target ≥ 0.8 on one thread).
+// both, samples/s of the integrator, and their ratio (target ≥ 0.8 on one
+// thread), by wall-clock time and by process CPU time (ratio_cpu: less
+// sensitive to other processes preempting this one on a loaded machine).
+// The second argument picks the pixel sampler: random, sobol, jittered and
+// pmj02 take the PixelSampler's direct paths, halton the registry per
+// (pixel, dimension).
 //
 // Not in bench/*_bench.cpp (the glob of stratum_bench) because stratum_bench
 // does not link stratum_render and Embree; see /work/helpers/notes/render.md.
@@ -13,6 +18,9 @@
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
 
+#include <time.h>
+
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <limits>
@@ -29,12 +37,14 @@ using namespace stratum::render;
 constexpr int kSize = 64;
 constexpr std::uint32_t kSpp = 4, kShadow = 4;
 
-RenderSettings bench_settings(unsigned threads) {
+constexpr std::array<const char*, 5> kSamplers = {"random", "sobol", "jittered", "pmj02", "halton"};
+
+RenderSettings bench_settings(unsigned threads, const char* sampler = "random") {
   RenderSettings s;
   s.integrator = "direct";
   s.light_strategy = "area";
   s.light_samples = kShadow;
-  s.sampler.sampler = "random";
+  s.sampler.sampler = sampler;
   s.sampler.spp = kSpp;
   s.sampler.seed = 1;
   s.passes = 1;
@@ -181,23 +191,36 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// CPU seconds used by this process (all its threads).
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 void BM_DirectVsBareEmbree(benchmark::State& state) {
   const unsigned threads = unsigned(state.range(0));
+  const char* sampler = kSamplers[std::size_t(state.range(1))];
+  state.SetLabel(sampler);
   const Scene scene = bench_scene();
-  const RenderSettings settings = bench_settings(threads);
+  const RenderSettings settings = bench_settings(threads, sampler);
   const Recorded rays = record(scene, settings);
   const BareScene bare(scene);
   const double ray_count = double(rays.eye.size() + rays.shadow.size());
   tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
-  double render_seconds = 0, bare_seconds = 0;
+  double render_seconds = 0, bare_seconds = 0, render_cpu = 0, bare_cpu = 0;
   std::int64_t iterations = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
+    double cpu = process_cpu_seconds();
     benchmark::DoNotOptimize(render(scene, settings).rgb.data());
     render_seconds += seconds_since(start);
+    render_cpu += process_cpu_seconds() - cpu;
     start = std::chrono::steady_clock::now();
+    cpu = process_cpu_seconds();
     benchmark::DoNotOptimize(trace(bare, rays));
     bare_seconds += seconds_since(start);
+    bare_cpu += process_cpu_seconds() - cpu;
     ++iterations;
   }
   const double integrator_rate = ray_count * double(iterations) / render_seconds;
@@ -207,11 +230,28 @@ void BM_DirectVsBareEmbree(benchmark::State& state) {
   state.counters["bare_embree_rays_per_s"] = bare_rate;
   state.counters["samples_per_s"] = double(kSize * kSize * kSpp) * double(iterations) / render_seconds;
   state.counters["ratio"] = integrator_rate / bare_rate;
+  state.counters["ratio_cpu"] = bare_cpu / render_cpu;
+}
+
+/// The fixed cost of one render() call (Embree device and BVH, buffers,
+/// threads): the Cornell box at 1×1 pixel, 1 sample.
+void BM_RenderSetup(benchmark::State& state) {
+  Scene scene = bench_scene();
+  scene.camera.width = scene.camera.height = 1;
+  RenderSettings settings = bench_settings(1);
+  settings.sampler.spp = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(render(scene, settings).rgb.data());
 }
 
 }  // namespace
 
-BENCHMARK(BM_DirectVsBareEmbree)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_DirectVsBareEmbree)
+    ->ArgsProduct({{1, 2}, {0, 1, 2, 3, 4}})
+    ->ArgNames({"threads", "sampler"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_RenderSetup)->Unit(benchmark::kMillisecond);
 #ifdef STRATUM_RENDER_BENCH_MAIN  // built on its own (see the note at the top)
 BENCHMARK_MAIN();
 #endif

@@ -1,5 +1,6 @@
 /// `stratum compare [SCENE] (--builtin NAME | --configs FILE)`: renders each
-/// configuration and measures it against a cached converged reference.
+/// configuration, at equal samples or equal time, and measures it against a
+/// cached converged reference.
 #ifdef STRATUM_HAS_RENDER
 #include <fmt/core.h>
 
@@ -15,15 +16,26 @@ namespace stratum::cli {
 
 namespace {
 
-struct CompareOptions {
-  std::string scene, configs, builtin = "shadow-rays", cache = ".stratum-cache";
+struct CompareCommand {
+  std::string scene, configs, builtin = "shadow-rays";
+  render::CompareOptions run;
   std::int64_t reference_spp = 1024, width = 64, height = 64;
   unsigned threads = 1;
   std::uint64_t seed = 1;
   bool json = false, list = false;
 };
 
-void run_compare(const CompareOptions& o) {
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw invalid_argument("configs", path, "must be a readable JSON file");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw invalid_argument("configs", path, std::string("is not valid JSON: ") + e.what());
+  }
+}
+
+void run_compare(CompareCommand& o) {
   if (o.list) {
     for (const auto& [name, description] : render::builtin_comparisons()) fmt::print("{:16} {}\n", name, description);
     return;
@@ -31,68 +43,51 @@ void run_compare(const CompareOptions& o) {
   require(o.reference_spp >= 1 && o.reference_spp <= (1 << 24), "reference-spp", o.reference_spp, "must be in [1, 2^24]");
   require(o.width >= 1 && o.width <= 16384, "width", o.width, "must be in [1, 16384]");
   require(o.height >= 1 && o.height <= 16384, "height", o.height, "must be in [1, 16384]");
-  std::vector<render::CompareConfig> configs;
-  if (!o.configs.empty()) {
-    std::ifstream in(o.configs);
-    if (!in) throw invalid_argument("configs", o.configs, "must be a readable JSON file");
-    nlohmann::json document;
-    try {
-      document = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-      throw invalid_argument("configs", o.configs, std::string("is not valid JSON: ") + e.what());
-    }
-    configs = render::parse_configs(document, o.threads, o.seed);
-  } else {
-    configs = render::builtin_comparison(o.builtin, o.threads, o.seed);
-  }
-  std::string key = "builtin:cornell-box";
-  render::Scene scene = render::cornell_box();
-  if (o.scene.empty()) {
-    // The built-in box without the thin lens, and without motion except for
-    // the time-pattern comparison: each comparison isolates its own integral.
-    scene.camera.aperture_radius = 0;
-    const bool keep_motion = o.configs.empty() && o.builtin == "time-pattern";
-    if (!keep_motion)
-      for (auto& shape : scene.shapes) shape.motion = {};
-    key += keep_motion ? ":pinhole" : ":pinhole:static";
-    scene.name += keep_motion ? "-pinhole" : "-static";
-  } else {
-    scene = render::load_scene(o.scene);
-    std::ifstream in(o.scene);
-    key.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  scene.camera.width = int(o.width);
-  scene.camera.height = int(o.height);
-  const auto rows = render::compare(scene, key, configs, std::uint32_t(o.reference_spp), o.cache);
+  o.run.reference_spp = std::uint32_t(o.reference_spp);
+  const auto configs = o.configs.empty() ? render::builtin_comparison(o.builtin, o.threads, o.seed)
+                                         : render::parse_configs(read_json(o.configs), o.threads, o.seed);
+  // Motion only for the time-pattern comparison: each isolates its own integral.
+  const bool keep_motion = o.configs.empty() && o.builtin == "time-pattern";
+  const auto [scene, key] = render::comparison_scene(o.scene, keep_motion, int(o.width), int(o.height));
+  const auto rows = render::compare(scene, key, configs, o.run);
   if (o.json) {
     nlohmann::json out = nlohmann::json::array();
-    for (const auto& r : rows)
-      out.push_back({{"label", r.label}, {"spp", r.samples}, {"mse", r.mse}, {"relative_mse", r.relative_mse},
-                     {"seconds", r.seconds}, {"efficiency", r.efficiency}, {"mse_ratio", r.mse_ratio},
-                     {"efficiency_ratio", r.efficiency_ratio}});
-    std::cout << nlohmann::json{{"scene", scene.name}, {"reference_spp", o.reference_spp}, {"rows", out}}.dump(2) << "\n";
+    for (const auto& r : rows) {
+      out.push_back({{"label", r.label}, {"spp", r.samples}, {"passes", r.passes}, {"mse", r.mse},
+                     {"relative_mse", r.relative_mse}, {"seconds", r.seconds}, {"efficiency", r.efficiency},
+                     {"mse_ratio", r.mse_ratio}, {"efficiency_ratio", r.efficiency_ratio}});
+      if (!r.variance_path.empty()) out.back()["variance"] = r.variance_path;
+    }
+    std::cout << nlohmann::json{{"scene", scene.name}, {"reference_spp", o.reference_spp}, {"equal_time", o.run.equal_time},
+                                {"rows", out}}.dump(2)
+              << "\n";
     return;
   }
-  fmt::print("{:18} {:>5} {:>11} {:>11} {:>9} {:>11} {:>9} {:>9}\n", "config", "spp", "MSE", "relMSE", "seconds",
+  fmt::print("{:18} {:>7} {:>11} {:>11} {:>9} {:>11} {:>9} {:>9}\n", "config", "spp", "MSE", "relMSE", "seconds",
              "efficiency", "MSE x", "eff. x");
   for (const auto& r : rows)
-    fmt::print("{:18} {:>5} {:>11.4e} {:>11.4e} {:>9.3f} {:>11.4e} {:>9.2f} {:>9.2f}\n", r.label, r.samples, r.mse,
+    fmt::print("{:18} {:>7} {:>11.4e} {:>11.4e} {:>9.3f} {:>11.4e} {:>9.2f} {:>9.2f}\n", r.label, r.samples, r.mse,
                r.relative_mse, r.seconds, r.efficiency, r.mse_ratio, r.efficiency_ratio);
-  fmt::print("(ratios against the first row; efficiency = 1 / (MSE x seconds); reference: {} spp, cached in {})\n",
-             o.reference_spp, o.cache);
+  fmt::print("({}; ratios against the first row; efficiency = 1 / (MSE x seconds); reference: {} spp, cached in {})\n",
+             o.run.equal_time > 0 ? fmt::format("equal time: {} s each", o.run.equal_time) : std::string("equal samples"),
+             o.reference_spp, o.run.cache_dir);
+  if (!o.run.variance_dir.empty()) fmt::print("(variance images in {})\n", o.run.variance_dir);
 }
 
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
-  auto o = std::make_shared<CompareOptions>();
+  auto o = std::make_shared<CompareCommand>();
   auto* command = app.add_subcommand("compare", "Measure render configurations against a converged reference");
   command->add_option("scene", o->scene, "JSON scene (default: the built-in Cornell box)");
   command->add_option("--builtin", o->builtin, "a built-in comparison (see --list)")->capture_default_str();
   command->add_option("--configs", o->configs, "JSON file: an array of configurations (docs/render.md)");
   command->add_flag("--list", o->list, "list the built-in comparisons");
   command->add_option("--reference-spp", o->reference_spp, "samples per pixel of the reference")->capture_default_str();
-  command->add_option("--cache", o->cache, "folder of cached references")->capture_default_str();
+  command->add_option("--cache", o->run.cache_dir, "folder of cached references")->capture_default_str();
+  command->add_option("--equal-time", o->run.equal_time,
+                      "seconds per configuration: independent passes until then (0: equal samples)");
+  command->add_option("--variance-dir", o->run.variance_dir, "write each configuration's variance image there (EXR)");
   command->add_option("--width", o->width, "image width")->capture_default_str();
   command->add_option("--height", o->height, "image height")->capture_default_str();
   command->add_option("--threads", o->threads, "threads")->capture_default_str();

@@ -1,5 +1,7 @@
 /// `stratum render [SCENE.json]`: renders a scene (the built-in Cornell box
-/// without one) and writes a PNG and optionally a linear EXR.
+/// without one) and writes a PNG and optionally a linear EXR and the
+/// per-pixel variance; `--reference` renders (or loads from the cache) the
+/// converged reference of the same estimand instead.
 #ifdef STRATUM_HAS_RENDER
 #include <fmt/core.h>
 #include <unistd.h>
@@ -8,6 +10,7 @@
 #include <csignal>
 
 #include "commands.hpp"
+#include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
 
@@ -19,16 +22,19 @@ std::atomic<bool> interrupted{false};
 extern "C" void on_interrupt(int) { interrupted.store(true); }
 
 struct RenderOptions {
-  std::string scene, output = "render.png", exr;
+  std::string scene, output = "render.png", exr, variance, cache = ".stratum-cache";
   render::RenderSettings settings;
-  std::int64_t spp = 16, width = 0, height = 0;
-  bool quiet = false;
+  std::int64_t spp = 16, width = 0, height = 0, reference_spp = 1024;
+  bool quiet = false, reference = false;
 };
 
 void run_render(RenderOptions& options) {
   require(options.spp >= 1 && options.spp <= (std::int64_t{1} << 24), "spp", options.spp, "must be in [1, 2^24]");
   options.settings.sampler.spp = static_cast<std::uint32_t>(options.spp);
   render::validate_settings(options.settings);
+  require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",
+          options.reference_spp, "must be in [1, 2^24]");
+  if (!options.variance.empty()) render::check_variance_path("variance", options.variance);
   std::vector<std::string> warnings;
   render::Scene scene = options.scene.empty() ? render::cornell_box() : render::load_scene(options.scene, &warnings);
   for (const auto& warning : warnings) fmt::print(stderr, "stratum: warning: {}\n", warning);
@@ -45,14 +51,27 @@ void run_render(RenderOptions& options) {
     fmt::print(stderr, "\rrendering: pass {}/{}  {:.1f} s  ETA {:.1f} s   ", done, total, seconds, eta);
     if (done == total) fmt::print(stderr, "\n");
   };
-  std::signal(SIGINT, on_interrupt);
-  const render::Image image = render::render(scene, options.settings, progress, &interrupted);
-  std::signal(SIGINT, SIG_DFL);
+  render::Image image;
+  bool cached = false;
+  if (options.reference) {
+    const std::string key = render::scene_fingerprint(scene), spp_text = std::to_string(options.reference_spp);
+    const auto spp = std::uint32_t(options.reference_spp);
+    image = render::reference_image(scene, key, options.settings, spp, options.cache, &cached);
+    fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text, cached ? "loaded from the cache" : "rendered and cached in",
+               render::reference_cache_path(scene, key, options.settings, spp, options.cache));
+  } else {
+    std::signal(SIGINT, on_interrupt);
+    image = render::render(scene, options.settings, progress, &interrupted);
+    std::signal(SIGINT, SIG_DFL);
+  }
+  require(options.variance.empty() || image.variance.size() == image.rgb.size(), "variance", options.variance,
+          "needs per-pixel variances: this cached reference has none (delete it from --cache to render it again)");
   render::write_image(image, options.output);
   if (!options.exr.empty()) render::write_image(image, options.exr);
+  if (!options.variance.empty()) render::write_variance_image(image, options.variance);
   if (!options.quiet)
     fmt::print("{}: {}x{}, {} spp, {:.2f} s{}\n", options.output, image.width, image.height, image.samples, image.seconds,
-               interrupted ? " (interrupted)" : "");
+               interrupted ? " (interrupted)" : options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
 }
 
 }  // namespace
@@ -79,6 +98,11 @@ void add_render_command(CLI::App& app) {
   command->add_option("--time-limit", s.time_limit, "seconds; stops after the pass that reaches it (0: none)");
   command->add_option("--width", options->width, "override the scene's image width");
   command->add_option("--height", options->height, "override the scene's image height");
+  command->add_option("--variance", options->variance, "also write the variance of each pixel's mean (.exr)");
+  command->add_flag("--reference", options->reference,
+                    "render the converged reference of this estimand (Owen-scrambled Sobol', cached) instead");
+  command->add_option("--reference-spp", options->reference_spp, "samples per pixel of --reference")->capture_default_str();
+  command->add_option("--cache", options->cache, "folder of cached references")->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "no progress bar or summary");
   command->callback([options] { run_render(*options); });
 }

@@ -1,10 +1,128 @@
-/// Rendering from Python (LECTURE.md §1–3, 8, 9): only with the renderer built.
+/// Rendering from Python (LECTURE.md §1–3, 8, 9): render(), compare() and
+/// comparisons(), over the same C++ API as `stratum render` and `stratum
+/// compare` (only with the renderer built).
 #ifdef STRATUM_HAS_RENDER
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <nlohmann/json.hpp>
+
 #include "bindings.hpp"
+#include "stratum/render/compare.hpp"
+#include "stratum/util/error.hpp"
+
+namespace py = pybind11;
 
 namespace stratum::python {
 
-void bind_render(pybind11::module_& m) { (void)m; }
+namespace {
+
+/// (height, width, 3) float64, copied from an image's row-major RGB values.
+py::array_t<double> to_array(const std::vector<double>& values, int width, int height) {
+  py::array_t<double> out({py::ssize_t(height), py::ssize_t(width), py::ssize_t(3)});
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+void check_size(const char* name, int value) {
+  require(value >= 0 && value <= 16384, name, value, "must be in [1, 16384] (or None: the scene's)");
+}
+
+py::tuple render_image(const std::string& scene_path, int width, int height, const render::RenderSettings& settings,
+                       std::uint32_t reference_spp, const std::string& cache) {
+  check_size("width", width);
+  check_size("height", height);
+  render::validate_settings(settings);
+  render::Scene scene = scene_path.empty() ? render::cornell_box() : render::load_scene(scene_path);
+  if (width > 0) scene.camera.width = width;
+  if (height > 0) scene.camera.height = height;
+  render::Image image;
+  bool cached = false;
+  {
+    py::gil_scoped_release release;
+    image = reference_spp > 0 ? render::reference_image(scene, render::scene_fingerprint(scene), settings, reference_spp, cache, &cached)
+                              : render::render(scene, settings);
+  }
+  py::object variance = py::none();
+  if (image.variance.size() == image.rgb.size()) variance = to_array(image.variance, image.width, image.height);
+  return py::make_tuple(to_array(image.rgb, image.width, image.height), variance, image.samples, image.seconds, cached);
+}
+
+py::list compare_rows(const std::string& scene_path, const std::string& builtin, const std::string& configs_json,
+                      render::CompareOptions options, int width, int height, unsigned threads, std::uint64_t seed) {
+  std::vector<render::CompareConfig> configs;
+  if (configs_json.empty()) {
+    configs = render::builtin_comparison(builtin, threads, seed);
+  } else {
+    configs = render::parse_configs(nlohmann::json::parse(configs_json), threads, seed);
+  }
+  const bool keep_motion = configs_json.empty() && builtin == "time-pattern";
+  const auto prepared = render::comparison_scene(scene_path, keep_motion, width, height);
+  std::vector<render::CompareRow> rows;
+  {
+    py::gil_scoped_release release;
+    rows = render::compare(prepared.scene, prepared.key, configs, options);
+  }
+  py::list out;
+  for (const auto& r : rows) {
+    py::dict row(py::arg("label") = r.label, py::arg("spp") = r.samples, py::arg("passes") = r.passes,
+                 py::arg("mse") = r.mse, py::arg("relative_mse") = r.relative_mse, py::arg("seconds") = r.seconds,
+                 py::arg("efficiency") = r.efficiency, py::arg("mse_ratio") = r.mse_ratio,
+                 py::arg("efficiency_ratio") = r.efficiency_ratio);
+    if (!r.variance_path.empty()) row["variance"] = r.variance_path;
+    out.append(row);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_render(py::module_& m) {
+  m.def(
+      "render",
+      [](const std::string& scene, int width, int height, std::uint32_t spp, const std::string& integrator,
+         std::uint32_t light_samples, const std::string& light_strategy, const std::string& hemisphere,
+         std::uint32_t max_depth, const std::string& sampler, const std::string& randomize,
+         const std::string& time_pattern, std::uint64_t seed, unsigned threads, std::uint32_t passes,
+         bool pixel_centers, std::uint32_t reference_spp, const std::string& cache) {
+        render::RenderSettings s;
+        s.integrator = integrator;
+        s.light_samples = light_samples;
+        s.light_strategy = light_strategy;
+        s.hemisphere = hemisphere;
+        s.max_depth = max_depth;
+        s.sampler = render::PixelSamplerSettings{sampler, randomize, seed, spp, time_pattern};
+        s.threads = threads;
+        s.passes = passes;
+        s.pixel_centers = pixel_centers;
+        return render_image(scene, width, height, s, reference_spp, cache);
+      },
+      py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("spp"), py::arg("integrator"),
+      py::arg("light_samples"), py::arg("light_strategy"), py::arg("hemisphere"), py::arg("max_depth"),
+      py::arg("sampler"), py::arg("randomize"), py::arg("time_pattern"), py::arg("seed"), py::arg("threads"),
+      py::arg("passes"), py::arg("pixel_centers"), py::arg("reference_spp"), py::arg("cache"));
+  m.def(
+      "compare",
+      [](const std::string& scene, const std::string& builtin, const std::string& configs, std::uint32_t reference_spp,
+         const std::string& cache, double equal_time, const std::string& variance_dir, int width, int height,
+         unsigned threads, std::uint64_t seed) {
+        render::CompareOptions options;
+        options.reference_spp = reference_spp;
+        options.cache_dir = cache;
+        options.equal_time = equal_time;
+        options.variance_dir = variance_dir;
+        return compare_rows(scene, builtin, configs, options, width, height, threads, seed);
+      },
+      py::arg("scene"), py::arg("builtin"), py::arg("configs"), py::arg("reference_spp"), py::arg("cache"),
+      py::arg("equal_time"), py::arg("variance_dir"), py::arg("width"), py::arg("height"), py::arg("threads"),
+      py::arg("seed"));
+  m.def("comparisons", [] {
+    py::list list;
+    for (const auto& [name, description] : render::builtin_comparisons())
+      list.append(py::dict(py::arg("name") = name, py::arg("description") = description));
+    return list;
+  });
+}
 
 }  // namespace stratum::python
 #endif

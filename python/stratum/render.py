@@ -1,4 +1,116 @@
-"""Rendering: the camera integral, area lights and path tracing (LECTURE.md §1–3, 8, 9)."""
+"""Rendering: the camera integral, area lights and path tracing (LECTURE.md §1–3, 8, 9).
+
+The same renderer as `stratum render` and `stratum compare` (docs/render.md);
+present only when the compiled module was built with the renderer.
+"""
 from __future__ import annotations
 
-__all__: list[str] = []
+import json
+import numbers
+import os
+
+from . import _stratum
+
+__all__ = ["render", "compare", "comparisons"] if hasattr(_stratum, "comparisons") else []
+
+
+def _error(name, value, allowed):
+    return _stratum.InvalidArgument(f"invalid {name} = {value!r}: {allowed}")
+
+
+def _count(name, value, low=1, high=2**24):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not low <= value <= high:
+        raise _error(name, value, f"must be an integer in [{low}, {high}]")
+    return int(value)
+
+
+def _text(name, value, optional=False):
+    if value is None and optional:
+        return ""
+    if not isinstance(value, str):
+        raise _error(name, value, "must be a string" + (" or None" if optional else ""))
+    return value
+
+
+def _path(name, value):
+    if value is None:
+        return ""
+    if not isinstance(value, (str, os.PathLike)):
+        raise _error(name, value, "must be a path or None")
+    return os.fspath(value)
+
+
+def _seed(value):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not 0 <= value < 2**64:
+        raise _error("seed", value, "must be an integer in [0, 2^64)")
+    return int(value)
+
+
+def render(scene=None, width: int | None = None, height: int | None = None, spp: int = 16, integrator: str = "direct",
+           light_samples: int = 1, light_strategy: str = "area", hemisphere: str = "cosine", sampler: str = "sobol",
+           randomize: str | None = None, time_pattern: str | None = None, seed: int = 0, threads: int = 1,
+           pixel_centers: bool = False, max_depth: int = 5, passes: int = 4, with_variance: bool = False,
+           reference: bool = False, reference_spp: int = 1024, cache=".stratum-cache"):
+    """Renders `scene` (a JSON scene file, docs/scenes.md; None: the built-in
+    Cornell box) and returns the linear image as float64 of shape
+    (height, width, 3), top row first.
+
+    The options are those of `stratum render`. with_variance=True returns
+    (image, variance): the variance of each pixel's mean per channel (the
+    samples taken as independent). reference=True returns the converged
+    reference of this estimand instead (reference_spp Owen-scrambled Sobol'
+    samples), loaded from or stored in the folder `cache`.
+    Raises stratum.InvalidArgument naming the argument at fault."""
+    if not isinstance(pixel_centers, bool):
+        raise _error("pixel_centers", pixel_centers, "must be True or False")
+    image, variance, _, _, _ = _stratum.render(
+        _path("scene", scene), 0 if width is None else _count("width", width, 1, 16384),
+        0 if height is None else _count("height", height, 1, 16384), _count("spp", spp),
+        _text("integrator", integrator), _count("light_samples", light_samples, 1, 65536),
+        _text("light_strategy", light_strategy), _text("hemisphere", hemisphere), _count("max_depth", max_depth, 1, 1024),
+        _text("sampler", sampler), _text("randomize", randomize, True), _text("time_pattern", time_pattern, True),
+        _seed(seed), _count("threads", threads, 1, 1024), _count("passes", passes), pixel_centers,
+        _count("reference_spp", reference_spp) if reference else 0, _path("cache", cache))
+    if with_variance:
+        if variance is None:
+            raise _error("with_variance", True, f"the cached reference in {cache} has no variance image")
+        return image, variance
+    return image
+
+
+def comparisons() -> list[dict]:
+    """The built-in comparisons: name and description (LECTURE.md section)."""
+    return _stratum.comparisons()
+
+
+def compare(scene=None, builtin: str | None = None, configs: list[dict] | None = None, reference_spp: int = 1024,
+            cache=".stratum-cache", equal_time: float | None = None, variance_dir=None, width: int = 64,
+            height: int = 64, threads: int = 1, seed: int = 1) -> list[dict]:
+    """Renders each configuration and measures it against its converged
+    reference, as `stratum compare`: one dict per configuration with label,
+    spp (samples taken), passes, mse, relative_mse, seconds, efficiency
+    (1 / (mse × seconds)), mse_ratio and efficiency_ratio (against the
+    first), and variance (the file) with variance_dir.
+
+    builtin: a name from comparisons() (default "shadow-rays"); configs: a
+    list of dicts with the keys of a configuration file (docs/render.md).
+    equal_time: seconds per configuration (independent passes until then);
+    None compares at equal samples."""
+    if builtin is not None and configs is not None:
+        raise _error("configs", configs, "give builtin or configs, not both")
+    text = ""
+    if configs is not None:
+        try:
+            text = json.dumps(configs)
+        except (TypeError, ValueError) as e:
+            raise _error("configs", configs, f"must be a list of JSON-serializable dicts ({e})") from None
+        if not isinstance(configs, (list, tuple)):
+            raise _error("configs", configs, "must be a list of dicts")
+    if equal_time is not None and (isinstance(equal_time, bool) or not isinstance(equal_time, numbers.Real)
+                                   or not 0 < equal_time <= 1e6):
+        raise _error("equal_time", equal_time, "must be a number of seconds in (0, 1e6], or None (equal samples)")
+    return _stratum.compare(_path("scene", scene), _text("builtin", builtin or "shadow-rays"), text,
+                            _count("reference_spp", reference_spp), _path("cache", cache),
+                            0.0 if equal_time is None else float(equal_time), _path("variance_dir", variance_dir),
+                            _count("width", width, 1, 16384), _count("height", height, 1, 16384),
+                            _count("threads", threads, 1, 1024), _seed(seed))

@@ -14,6 +14,7 @@ struct Accelerator::Embree {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::size_t> shape_of_geometry;
+  std::vector<Vec3> quad_normals;  ///< by shape: unit edge_u × edge_v of quads (computed once, not per hit)
   ~Embree() {
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
@@ -110,8 +111,10 @@ Accelerator::Accelerator(const Scene& scene) : embree_(std::make_unique<Embree>(
   embree_->device = rtcNewDevice(nullptr);
   if (!embree_->device) throw std::runtime_error("Embree: cannot create a device");
   embree_->scene = rtcNewScene(embree_->device);
+  embree_->quad_normals.resize(scene.shapes.size());
   for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
+    if (shape.type == ShapeType::quad) embree_->quad_normals[s] = normalize(cross(shape.edge_u, shape.edge_v));
     if (shape.type == ShapeType::triangles && shape.indices.empty()) continue;
     RTCGeometry geometry = make_geometry(embree_->device, shape);
     rtcCommitGeometry(geometry);
@@ -147,8 +150,9 @@ std::optional<Hit> Accelerator::intersect(const Ray& ray) const {
   if (shape.type == ShapeType::sphere) {
     hit.normal = normalize(hit.position - (shape.center + ray.time * shape.motion));
   } else if (shape.type == ShapeType::quad) {
-    hit.normal = normalize(cross(shape.edge_u, shape.edge_v));
+    hit.normal = embree_->quad_normals[hit.shape];
   } else {
+    hit.primitive = query.hit.primID;
     const auto& tri = shape.indices[query.hit.primID];
     const Vec3 a = shape.vertices[tri[0]], b = shape.vertices[tri[1]], c = shape.vertices[tri[2]];
     hit.normal = normalize(cross(b - a, c - a));

@@ -2,8 +2,13 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 
 #include "stratum/util/error.hpp"
@@ -166,50 +171,164 @@ Image read_image(const std::string& path) {
   return image;
 }
 
-Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
-                      const std::string& cache_dir, bool* cached) {
+namespace {
+
+RenderSettings reference_settings(const RenderSettings& settings, std::uint32_t spp) {
   RenderSettings reference = settings;
   reference.sampler = PixelSamplerSettings{"sobol", "owen-hash", 0x7265665ULL, spp, ""};
   reference.light_strategy = "solid-angle";
   reference.light_samples = 4;
   reference.hemisphere = "cosine";
   reference.time_limit = 0;
+  return reference;
+}
+
+std::string variance_sibling(const std::string& path) {
+  return path.substr(0, path.size() - 4) + ".variance.exr";
+}
+
+/// "3-16 shadow rays" -> "3-16-shadow-rays": a file name for a row.
+std::string file_name_for(std::size_t index, const std::string& label) {
+  std::string name = std::to_string(index) + "-";
+  for (const char c : label) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return name + ".exr";
+}
+
+}  // namespace
+
+std::string reference_cache_path(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
+                                 std::uint32_t spp, const std::string& cache_dir) {
   const std::uint64_t key = hash64(std::hash<std::string>{}(scene_key), std::hash<std::string>{}(settings.integrator),
                                    settings.max_depth, spp, std::uint64_t(scene.camera.width), std::uint64_t(scene.camera.height),
                                    std::uint64_t(settings.pixel_centers), 2);
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(key));
-  const std::filesystem::path path = std::filesystem::path(cache_dir) / (scene.name + "-" + settings.integrator + "-" + hex + ".exr");
+  return (std::filesystem::path(cache_dir) / (scene.name + "-" + settings.integrator + "-" + hex + ".exr")).string();
+}
+
+Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
+                      const std::string& cache_dir, bool* cached) {
+  const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
   if (std::filesystem::exists(path)) {
     if (cached) *cached = true;
-    return read_image(path.string());
+    Image image = read_image(path);
+    image.samples = spp;
+    if (std::filesystem::exists(variance_sibling(path))) image.variance = read_image(variance_sibling(path)).rgb;
+    return image;
   }
   if (cached) *cached = false;
-  Image image = render(scene, reference);
+  Image image = render(scene, reference_settings(settings, spp));
   std::error_code error;
   std::filesystem::create_directories(cache_dir, error);
   if (error) throw invalid_argument("cache", cache_dir, "must be a folder stratum can create: " + error.message());
-  write_image(image, path.string());
+  // The variance first: a reference whose image exists always has both.
+  write_variance_image(image, variance_sibling(path));
+  write_image(image, path);
   return image;
+}
+
+namespace {
+
+/// Samplers each of whose points is uniformly distributed on its own
+/// (independent points; Owen-scrambled Sobol', Owen 1997, "Scrambled net
+/// variance for integrals of smooth functions"), so any prefix of a pixel's
+/// set is an unbiased estimate and equal-time passes may continue one set.
+bool prefix_unbiased(const PixelSamplerSettings& s) {
+  const bool plain = s.randomize.empty();
+  return s.time_pattern.empty() && ((s.sampler == "random" && (plain || s.randomize == "none")) ||
+                                    (s.sampler == "sobol" && (plain || s.randomize == "owen-hash")));
+}
+
+/// Samples per pixel of one progressive set in equal-time rendering.
+constexpr std::uint32_t progressive_set = 4096;
+
+}  // namespace
+
+Image render_equal_time(const Scene& scene, const RenderSettings& settings, double seconds, std::uint32_t* passes) {
+  require(std::isfinite(seconds) && seconds > 0 && seconds <= 1e6, "equal-time", seconds, "must be in (0, 1e6] seconds");
+  validate_settings(settings);
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const std::uint32_t spp = settings.sampler.spp;
+  const bool progressive = prefix_unbiased(settings.sampler);
+  const std::uint32_t set_passes = progressive ? std::max<std::uint32_t>(1, progressive_set / spp) : 1;
+  Image total;
+  std::uint64_t samples = 0;
+  for (std::uint32_t set = 0; samples == 0 || elapsed() < seconds; ++set) {
+    // One render per set: a progressive one stops after the pass (spp
+    // samples) that reaches the remaining time.
+    RenderSettings pass = settings;
+    pass.sampler.spp = spp * set_passes;
+    pass.passes = set_passes;
+    pass.time_limit = progressive ? std::max(seconds - elapsed(), 1e-9) : 0;
+    if (set > 0) pass.sampler.seed = hash64(settings.sampler.seed, set);
+    const Image image = render(scene, pass);
+    const double n = image.samples;
+    if (set == 0) {
+      total = image;
+      for (double& v : total.rgb) v *= n;
+      for (double& v : total.variance) v *= n * n;
+    } else {
+      for (std::size_t i = 0; i < total.rgb.size(); ++i) {
+        total.rgb[i] += n * image.rgb[i];
+        total.variance[i] += n * n * image.variance[i];
+      }
+    }
+    samples += image.samples;
+    if (samples + std::uint64_t(spp) * set_passes > std::numeric_limits<std::uint32_t>::max()) break;
+  }
+  // The mean of all samples; the variance of that mean from the sets'.
+  const double n = double(samples);
+  for (double& v : total.rgb) v /= n;
+  for (double& v : total.variance) v /= n * n;
+  total.samples = std::uint32_t(samples);
+  total.seconds = elapsed();
+  if (passes) *passes = std::uint32_t(samples / spp);
+  return total;
 }
 
 std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
                                 std::uint32_t reference_spp, const std::string& cache_dir) {
+  CompareOptions options;
+  options.reference_spp = reference_spp;
+  options.cache_dir = cache_dir;
+  return compare(scene, scene_key, configs, options);
+}
+
+std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
+                                const CompareOptions& options) {
+  require(options.reference_spp >= 1 && options.reference_spp <= (1u << 24), "reference-spp", options.reference_spp,
+          "must be in [1, 2^24]");
+  require(std::isfinite(options.equal_time) && options.equal_time >= 0 && options.equal_time <= 1e6, "equal-time",
+          options.equal_time, "must be in [0, 1e6] seconds (0: equal samples)");
+  require(!configs.empty(), "configs", "(none)", "must name at least one configuration");
+  for (const CompareConfig& config : configs) validate_settings(config.settings);
+  if (!options.variance_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options.variance_dir, error);
+    if (error) throw invalid_argument("variance-dir", options.variance_dir, "must be a folder stratum can create: " + error.message());
+  }
   std::map<std::string, Image> references;  // one per estimand (integrator)
   std::vector<CompareRow> rows;
-  for (const CompareConfig& config : configs) {
+  for (std::size_t index = 0; index < configs.size(); ++index) {
+    const CompareConfig& config = configs[index];
     const std::string estimand = config.settings.integrator + "/" + std::to_string(config.settings.max_depth) +
                                  (config.settings.pixel_centers ? "/centres" : "");
     if (!references.count(estimand))
-      references[estimand] = reference_image(scene, scene_key, config.settings, reference_spp, cache_dir);
-    const Image image = render(scene, config.settings);
+      references[estimand] = reference_image(scene, scene_key, config.settings, options.reference_spp, options.cache_dir);
     CompareRow row;
+    const Image image = options.equal_time > 0 ? render_equal_time(scene, config.settings, options.equal_time, &row.passes)
+                                               : render(scene, config.settings);
     row.label = config.label;
     row.samples = image.samples;
     row.mse = mean_squared_error(image, references[estimand]);
     row.relative_mse = relative_mean_squared_error(image, references[estimand]);
     row.seconds = image.seconds;
     row.efficiency = 1 / (row.mse * row.seconds);
+    if (!options.variance_dir.empty()) {
+      row.variance_path = (std::filesystem::path(options.variance_dir) / file_name_for(index, config.label)).string();
+      write_variance_image(image, row.variance_path);
+    }
     rows.push_back(row);
   }
   for (CompareRow& row : rows) {

@@ -1,5 +1,6 @@
 /// Images through OpenImageIO: linear EXR, or 8-bit sRGB for other formats.
 #include <OpenImageIO/imageio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
 
@@ -47,6 +49,7 @@ void write_image(const Image& image, const std::string& path) {
   std::string pattern = (directory / ("." + target.stem().string() + ".XXXXXX" + extension)).string();
   const int fd = mkstemps(pattern.data(), static_cast<int>(extension.size()));
   if (fd < 0) throw invalid_argument("output", path, std::string("must be writable (") + std::strerror(errno) + ")");
+  fchmod(fd, 0644);  // mkstemps makes it private (0600); an image is for everyone to read
   close(fd);
   const bool ok = output->open(pattern, spec) &&
                   (linear ? output->write_image(OIIO::TypeDesc::FLOAT, floats.data())
@@ -58,6 +61,23 @@ void write_image(const Image& image, const std::string& path) {
     throw invalid_argument("output", path, "could not be written: " + error);
   }
   fs::rename(pattern, target);
+}
+
+void check_variance_path(const std::string& argument, const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  require(extension == ".exr", argument, path, "must be an OpenEXR file (.exr): variances are linear, unbounded values");
+}
+
+void write_variance_image(const Image& image, const std::string& path) {
+  check_variance_path("variance", path);
+  require(image.variance.size() == image.rgb.size(), "variance", path,
+          "needs the image's per-pixel variances (this image has none, e.g. a reference cached without them)");
+  Image variance;
+  variance.width = image.width;
+  variance.height = image.height;
+  variance.rgb = image.variance;
+  write_image(variance, path);
 }
 
 }  // namespace stratum::render

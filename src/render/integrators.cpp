@@ -18,19 +18,29 @@ constexpr double pi = std::numbers::pi;
 
 bool is_black(Vec3 c) { return c.x <= 0 && c.y <= 0 && c.z <= 0; }
 
-/// 2D samples for one shading point: on the stack for up to 16 (the usual
-/// case; no allocation per eye ray), on the heap beyond.
-class SampleBuffer {
+/// Per-shading-point scratch (2D samples, candidate shadow rays): on the
+/// stack for up to 16 (the usual case; no allocation per eye ray), on the
+/// heap beyond.
+template <class T>
+class Buffer {
  public:
-  explicit SampleBuffer(std::uint32_t n) {
+  explicit Buffer(std::uint32_t n) {
     if (n > local_.size()) heap_.resize(n);
   }
-  std::array<double, 2>* data() { return heap_.empty() ? local_.data() : heap_.data(); }
-  const std::array<double, 2>& operator[](std::size_t i) { return data()[i]; }
+  T* data() { return heap_.empty() ? local_.data() : heap_.data(); }
+  T& operator[](std::size_t i) { return data()[i]; }
 
  private:
-  std::array<std::array<double, 2>, 16> local_;
-  std::vector<std::array<double, 2>> heap_;
+  std::array<T, 16> local_;
+  std::vector<T> heap_;
+};
+using SampleBuffer = Buffer<std::array<double, 2>>;
+
+/// A light sample's shadow ray and what it adds when unoccluded.
+struct ShadowRay {
+  Vec3 direction;
+  double distance = 0;
+  Vec3 contribution;
 };
 
 /// How the settings' --light-strategy splits the work between the lights'
@@ -49,20 +59,43 @@ struct Strategy {
   bool mis() const { return sample_lights && sample_bsdf; }
 };
 
-/// What the integrators share for one camera ray.
-struct Context {
+enum class Kind { direct, irradiance, path };
+
+}  // namespace
+
+/// What the integrators need from the settings and scene, computed once.
+struct Integrator::Prepared {
   const Scene& scene;
   const Accelerator& accelerator;
   const RenderSettings& settings;
-  PixelSampler& sampler;
   Strategy strategy{settings.light_strategy};
+  Kind kind = settings.integrator == "irradiance" ? Kind::irradiance
+              : settings.integrator == "path"     ? Kind::path
+                                                  : Kind::direct;
+  bool cosine = settings.hemisphere == "cosine";
+  Vec3 environment;                    ///< the sum of the environment lights' radiance
+  std::vector<LightGeometry> geometry;  ///< by light
 
-  Vec3 environment() const {
-    Vec3 sum{};
-    for (const Light& light : scene.lights)
-      if (light.type == LightType::environment) sum += light.radiance;
-    return sum;
+  Prepared(const Scene& s, const Accelerator& a, const RenderSettings& r) : scene(s), accelerator(a), settings(r) {
+    for (const Light& light : scene.lights) {
+      if (light.type == LightType::environment) environment += light.radiance;
+      geometry.push_back(light_geometry(scene, light));
+    }
   }
+};
+
+namespace {
+
+/// What the integrators share for one camera ray.
+struct Context {
+  const Integrator::Prepared& prepared;
+  PixelSampler& sampler;
+  const Scene& scene = prepared.scene;
+  const Accelerator& accelerator = prepared.accelerator;
+  const RenderSettings& settings = prepared.settings;
+  const Strategy& strategy = prepared.strategy;
+
+  Vec3 environment() const { return prepared.environment; }
   const Material& material_of(const Hit& hit) const { return scene.materials[scene.shapes[hit.shape].material]; }
   /// Emitted radiance towards -direction (one-sided: on the normal's side).
   Vec3 emitted(const Hit& hit, Vec3 direction) const {
@@ -93,19 +126,29 @@ struct Context {
     sampler.get_2d_array(m, u.data());
     const auto offset = static_cast<std::size_t>(sampler.get_1d() * double(lights));
     const Vec3 n = bsdf.normal();
-    Vec3 sum{};
+    // Two phases: the M samples first (independent arithmetic that the CPU
+    // overlaps), then their shadow rays; the sum keeps the order of i.
+    Buffer<ShadowRay> rays(m);
+    std::uint32_t count = 0;
     for (std::uint32_t i = 0; i < m; ++i) {
-      const Light& light = scene.lights[(i + offset) % lights];
+      const std::size_t index = (i + offset) % lights;
+      const Light& light = scene.lights[index];
       if (!strategy.sample_lights && light.type != LightType::point) continue;  // found by BSDF sampling instead
-      const auto s = sample_light(scene, light, x, n, time, u[i], strategy.light);
+      const LightGeometry& geometry = prepared.geometry[index];
+      const auto s = geometry.quad && strategy.light == LightStrategy::area && light.type == LightType::area
+                         ? sample_quad_by_area(scene.shapes[light.shape], geometry, x, time, u[i])
+                         : sample_light(scene, light, geometry, x, n, time, u[i], strategy.light);
       if (!s) continue;
       const double cos_x = dot(n, s->wi);
       const Vec3 f = bsdf.eval(s->wi);
-      if (cos_x <= 0 || is_black(f) || !visible(x, s->wi, s->distance, time)) continue;
+      if (cos_x <= 0 || is_black(f)) continue;
       double w = 1;
       if (!s->delta && bsdf_samples > 0) w = mis_weight(m, s->pdf / double(lights), bsdf_samples, bsdf.pdf(s->wi));
-      sum += (w * cos_x / s->pdf) * (f * s->radiance);
+      rays[count++] = {s->wi, s->distance, (w * cos_x / s->pdf) * (f * s->radiance)};
     }
+    Vec3 sum{};
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (visible(x, rays[k].direction, rays[k].distance, time)) sum += rays[k].contribution;
     return (double(lights) / double(m)) * sum;
   }
 
@@ -118,11 +161,13 @@ struct Context {
     if (is_black(le) || !strategy.mis()) return le;
     const double lights = double(scene.lights.size());
     double pdf_light = 0;
-    for (const Light& light : scene.lights) {
+    for (std::size_t index = 0; index < scene.lights.size(); ++index) {
+      const Light& light = scene.lights[index];
       const bool match = next ? light.type == LightType::area && light.shape == next->shape
                               : light.type == LightType::environment;
       if (match) {  // each environment light is sampled with the same density
-        pdf_light = light_pdf(scene, light, x, n, time, wi, next ? &*next : nullptr, strategy.light);
+        pdf_light = light_pdf(scene, light, prepared.geometry[index], x, n, time, wi, next ? &*next : nullptr,
+                              strategy.light);
         break;
       }
     }
@@ -182,7 +227,7 @@ struct Context {
     const std::uint32_t m = std::max<std::uint32_t>(1, settings.light_samples);
     SampleBuffer u(m);
     sampler.get_2d_array(m, u.data());
-    const bool cosine = settings.hemisphere == "cosine";
+    const bool cosine = prepared.cosine;
     Vec3 sum{};
     for (std::uint32_t i = 0; i < m; ++i) {
       const auto& ui = u.data()[i];
@@ -245,12 +290,21 @@ struct Context {
 
 }  // namespace
 
+Integrator::Integrator(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings)
+    : prepared_(std::make_unique<const Prepared>(scene, accelerator, settings)) {}
+
+Integrator::~Integrator() = default;
+
+Vec3 Integrator::radiance(const Ray& ray, PixelSampler& sampler) const {
+  const Context context{*prepared_, sampler};
+  if (prepared_->kind == Kind::irradiance) return context.irradiance(ray);
+  if (prepared_->kind == Kind::path) return context.path(ray);
+  return context.direct_lighting(ray);
+}
+
 Vec3 radiance(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings, const Ray& ray,
               PixelSampler& sampler) {
-  const Context context{scene, accelerator, settings, sampler};
-  if (settings.integrator == "irradiance") return context.irradiance(ray);
-  if (settings.integrator == "path") return context.path(ray);
-  return context.direct_lighting(ray);
+  return Integrator(scene, accelerator, settings).radiance(ray, sampler);
 }
 
 }  // namespace stratum::render

@@ -26,16 +26,25 @@ void validate_settings(const RenderSettings& s) {
   require(s.threads >= 1 && s.threads <= 1024, "threads", s.threads, "must be in [1, 1024]");
   require(std::isfinite(s.time_limit) && s.time_limit >= 0, "time-limit", s.time_limit, "must be >= 0 seconds");
   require(s.sampler.spp >= 1, "spp", s.sampler.spp, "must be a positive integer");
+  const PixelSampler sampler(s.sampler);  // validates sampler, randomizer, spp and time pattern
+  try {  // the shadow-ray arrays: n = light_samples points of the sampler (jittered needs n = k²)
+    sampler.draw_for_test(s.light_samples, 0);
+  } catch (const invalid_argument& e) {
+    throw invalid_argument("light-samples", std::to_string(s.light_samples),
+                           "the sampler " + s.sampler.sampler + " cannot draw that many points per shading point (" +
+                               e.what() + ")");
+  }
 }
 
 Image render(const Scene& scene, const RenderSettings& settings,
              const std::function<void(std::uint32_t, std::uint32_t, double)>& progress, const std::atomic<bool>* stop) {
   validate_settings(settings);
-  PixelSampler{settings.sampler};  // validates the sampler settings before any work
+  const PixelSampler prototype{settings.sampler};  // one per tile is copied from it
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const Accelerator accelerator(scene);
   const CameraModel camera(scene.camera);
+  const Integrator integrator(scene, accelerator, settings);
   const int width = camera.width(), height = camera.height();
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
   std::vector<double> sum(3 * pixels, 0.0), sum2(3 * pixels, 0.0);
@@ -49,7 +58,7 @@ Image render(const Scene& scene, const RenderSettings& settings,
   for (std::uint32_t pass = 0; pass < passes; ++pass) {
     const std::uint32_t first = std::uint64_t(spp) * pass / passes, last = std::uint64_t(spp) * (pass + 1) / passes;
     tbb::parallel_for(0, tiles_x * tiles_y, [&](int t) {
-      PixelSampler sampler(settings.sampler);  // per tile: its own per-pixel cache
+      PixelSampler sampler(prototype);  // per tile: its own per-pixel cache
       const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
       for (int y = y0; y < std::min(y0 + tile, height); ++y)
         for (int x = x0; x < std::min(x0 + tile, width); ++x) {
@@ -60,7 +69,7 @@ Image render(const Scene& scene, const RenderSettings& settings,
             const double time = sampler.get_time();
             const auto lens = sampler.get_2d();
             const Ray ray = camera.generate(x + film[0], y + film[1], lens, time);
-            const Vec3 l = radiance(scene, accelerator, settings, ray, sampler);
+            const Vec3 l = integrator.radiance(ray, sampler);
             for (int c = 0; c < 3; ++c) {
               const double v = std::isfinite(l[c]) ? l[c] : 0.0;  // a NaN path counts as black
               sum[p + c] += v;

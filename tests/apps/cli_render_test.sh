@@ -31,18 +31,27 @@ expect_error "output" render --width 8 --height 8 --spp 1 -o "$tmp/x.unknownform
 [ ! -e "$tmp/x.png" ] && ok || fail "a failed render left x.png"
 [ -z "$(ls -A "$tmp" | grep '^\.')" ] && ok || fail "temporary files left: $(ls -A "$tmp")"
 
-# stratum compare: built-in sets, JSON output, bad input.
-"$stratum" compare --list | grep -q '^shadow-rays' && ok || fail "compare --list"
-"$stratum" compare --builtin shadow-rays --width 8 --height 8 --reference-spp 32 --cache "$tmp/cache" --json >"$tmp/cmp.json" \
-  && /usr/bin/python3 -c "
-import json; d = json.load(open('$tmp/cmp.json')); rows = d['rows']
-assert [r['label'] for r in rows] == ['1 shadow ray', '16 shadow rays'], rows
-assert rows[0]['mse_ratio'] == 1 and rows[1]['mse'] > 0 and rows[1]['efficiency'] > 0" && ok || fail "compare --json"
-ls "$tmp/cache"/*.exr >/dev/null 2>&1 && ok || fail "reference cached as EXR"
-expect_error "comparison" compare --builtin nope
-expect_error "reference-spp" compare --reference-spp 0
-echo '[{"label": "x", "colour": 2}]' >"$tmp/cfg.json"
-expect_error "colour" compare --configs "$tmp/cfg.json" --width 4 --height 4
-expect_error "configs" compare --configs "$tmp/nope.json"
+# --reference: rendered once, then loaded from the cache (said on stderr),
+# giving the same EXR (OpenEXR's DateTime header aside) and the same PNG.
+ref=(render --reference --reference-spp 16 --cache "$tmp/refs" --width 12 --height 10 --quiet)
+"$stratum" "${ref[@]}" -o "$tmp/r1.png" --exr "$tmp/r1.exr" --variance "$tmp/r1v.exr" 2>"$tmp/r1.err" && ok || fail "render --reference"
+grep -q "rendered and cached" "$tmp/r1.err" && ok || fail "first --reference not rendered: $(cat "$tmp/r1.err")"
+"$stratum" "${ref[@]}" -o "$tmp/r2.png" --exr "$tmp/r2.exr" --variance "$tmp/r2v.exr" 2>"$tmp/r2.err" && ok || fail "render --reference again"
+grep -q "loaded from the cache" "$tmp/r2.err" && ok || fail "second --reference missed the cache: $(cat "$tmp/r2.err")"
+/usr/bin/python3 - "$tmp" <<'PY' && ok || fail "cached reference EXR differs"
+import re, sys
+def body(name):  # the file with its header's "YYYY:MM:DD HH:MM:SS" time stamp blanked
+    return re.sub(rb"\d{4}:\d\d:\d\d \d\d:\d\d:\d\d", b"T" * 19, open(f"{sys.argv[1]}/{name}", "rb").read())
+assert body("r1.exr") == body("r2.exr") and body("r1v.exr") == body("r2v.exr")
+assert body("r1.exr") != body("r1v.exr")
+PY
+cmp -s "$tmp/r1.png" "$tmp/r2.png" && ok || fail "cached reference PNG differs"
+[ "$(ls "$tmp/refs" | wc -l)" = 2 ] && ok || fail "cache holds the reference and its variance: $(ls "$tmp/refs")"
+"$stratum" render --reference --reference-spp 16 --cache "$tmp/refs" --width 12 --height 11 -q -o "$tmp/r3.png" 2>"$tmp/r3.err"
+grep -q "rendered and cached" "$tmp/r3.err" && ok || fail "another resolution hit the cache"
+expect_error "reference-spp" render --reference --reference-spp 0 -o "$tmp/x.png"
+"$stratum" render --width 8 --height 8 --spp 4 -q -o "$tmp/v.png" --variance "$tmp/v.exr" && [ -s "$tmp/v.exr" ] && ok || fail "--variance"
+expect_error "variance" render --width 8 --height 8 --spp 1 -o "$tmp/x.png" --variance "$tmp/v.png"
+[ ! -e "$tmp/x.png" ] && ok || fail "a refused --variance left x.png"
 
 finish

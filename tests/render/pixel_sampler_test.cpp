@@ -110,8 +110,9 @@ namespace stratum::render {
 namespace {
 
 TEST(PixelSampler, FastPathsEqualTheRegistry) {
-  for (const char* name : {"random", "sobol"}) {
+  for (const char* name : {"random", "sobol", "jittered", "pmj02"}) {
     const PixelSampler sampler(settings(name, 16));
+    EXPECT_TRUE(sampler.direct()) << name;
     for (std::uint64_t seed : {0ull, 12345ull, 0xdeadbeefcafeull}) {
       const PointSet fast = sampler.draw_for_test(64, seed);
       SamplerRequest request;
@@ -121,6 +122,42 @@ TEST(PixelSampler, FastPathsEqualTheRegistry) {
       const PointSet reference = generate_points(name, request);
       for (std::size_t i = 0; i < 128; ++i) ASSERT_EQ(fast.data[i], reference.data[i]) << name << " " << i;
     }
+  }
+}
+
+TEST(PixelSampler, OtherSamplersGoThroughTheRegistry) {
+  EXPECT_FALSE(PixelSampler(settings("halton", 16)).direct());
+  PixelSamplerSettings owen = settings("sobol", 16);
+  owen.randomize = "owen";  // not the direct path's owen-hash
+  EXPECT_FALSE(PixelSampler(owen).direct());
+}
+
+TEST(PixelSampler, ACopyDrawsWhatTheOriginalDraws) {
+  for (const char* name : {"pmj02", "halton"}) {
+    PixelSampler original(settings(name, 16));
+    PixelSampler copy(original);
+    for (std::uint32_t i = 0; i < 16; ++i) {
+      original.start_pixel_sample(5, 1, i);
+      copy.start_pixel_sample(5, 1, i);
+      EXPECT_EQ(original.get_pixel_2d(), copy.get_pixel_2d()) << name;
+      EXPECT_EQ(original.get_1d(), copy.get_1d()) << name;
+      std::array<double, 2> a[4], b[4];
+      original.get_2d_array(4, a);
+      copy.get_2d_array(4, b);
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(a[k], b[k]) << name;
+    }
+  }
+}
+
+TEST(PixelSampler, JitteredArraysOfANonSquareCountAreRefusedByName) {
+  PixelSampler sampler(settings("jittered", 16));
+  sampler.start_pixel_sample(0, 0, 0);
+  std::array<double, 2> out[3];
+  try {
+    sampler.get_2d_array(3, out);
+    ADD_FAILURE() << "no error";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("n = 3"), std::string::npos) << e.what();
   }
 }
 

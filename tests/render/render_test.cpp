@@ -134,6 +134,18 @@ TEST(Render, BadSettingsAreNamed) {
   EXPECT_THROW(render(scene, s), invalid_argument);
   s = settings("direct", 0);
   EXPECT_THROW(render(scene, s), invalid_argument);
+  // Jittered shadow-ray arrays need a square count: refused before rendering, naming --light-samples.
+  s = settings("direct", 4);
+  s.sampler.sampler = "jittered";
+  s.light_samples = 3;
+  try {
+    render(scene, s);
+    ADD_FAILURE() << "no error";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("light-samples = 3"), std::string::npos) << e.what();
+  }
+  s.light_samples = 4;
+  EXPECT_NO_THROW(render(scene, s));
 }
 
 }  // namespace

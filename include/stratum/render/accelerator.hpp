@@ -22,6 +22,7 @@ struct Ray {
 struct Hit {
   double t = 0;
   std::size_t shape = 0;  ///< index into Scene::shapes
+  std::size_t primitive = 0;  ///< triangles: index into Shape::indices (0 for other shapes)
   Vec3 position;
   Vec3 normal;            ///< unit geometric normal, as the shape is oriented (not flipped to the ray)
 };

@@ -21,6 +21,20 @@ struct CompareRow {
   std::uint32_t samples = 0;  ///< eye rays per pixel taken
   double mse = 0, relative_mse = 0, seconds = 0, efficiency = 0;
   double mse_ratio = 1, efficiency_ratio = 1;  ///< baseline / this for MSE; this / baseline for efficiency
+  std::uint32_t passes = 1;    ///< equal time: independent renders averaged (1 at equal samples)
+  std::string variance_path;   ///< where its variance image was written (CompareOptions::variance_dir)
+};
+
+/// How compare() runs, beyond the configurations.
+struct CompareOptions {
+  std::uint32_t reference_spp = 1024;
+  std::string cache_dir = ".stratum-cache";
+  /// Equal time: seconds of rendering per configuration (see
+  /// render_equal_time); 0: equal samples, each configuration at its spp.
+  double equal_time = 0;
+  /// When set, each configuration's per-pixel variance image (Image::variance)
+  /// is written there as <row index>-<label>.exr.
+  std::string variance_dir;
 };
 
 /// Names of the built-in comparisons, each with a one-line description.
@@ -54,5 +68,49 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
 
 /// Reads an image written by write_image (EXR) back (for cached references).
 Image read_image(const std::string& path);
+
+/// Where reference_image caches the reference for these arguments (the
+/// variance image sits beside it, with ".variance.exr" for ".exr").
+std::string reference_cache_path(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
+                                 std::uint32_t spp, const std::string& cache_dir);
+
+/// Runs every configuration, at equal samples or at equal time
+/// (options.equal_time), and measures it against its reference.
+std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
+                                const CompareOptions& options);
+
+/// Equal-time rendering (LECTURE.md §2: efficiency at equal cost): passes
+/// of the configuration's spp samples per pixel until `seconds` have passed
+/// (at least one; the pass that reaches the time finishes). Samplers whose
+/// every point is uniform on its own (random; sobol with owen-hash) continue
+/// one set per pixel (4096 samples; render's time_limit stops it), so a QMC
+/// sequence keeps its convergence; any other sampler or time pattern takes
+/// complete, independent renders (pass k > 0 with seed hash(seed, k)), each a
+/// whole pattern, unbiased for stratified patterns too. The result is the
+/// mean of all samples: samples = spp × passes, seconds the total wall time
+/// (≥ `seconds`), variance that of the mean.
+Image render_equal_time(const Scene& scene, const RenderSettings& settings, double seconds, std::uint32_t* passes = nullptr);
+
+/// Writes `image.variance` (the variance of each pixel's mean, per channel)
+/// as a linear EXR; `path` must end in .exr (checked before any work by
+/// check_variance_path). Temporary file renamed on success, as write_image.
+void write_variance_image(const Image& image, const std::string& path);
+void check_variance_path(const std::string& argument, const std::string& path);
+
+/// A fingerprint of everything in a scene that changes its image (camera,
+/// materials, every shape's numbers and mesh, lights), as 16 hex digits:
+/// the scene key of cached references, so an edited mesh file or another
+/// resolution never hits a stale reference.
+std::string scene_fingerprint(const Scene& scene);
+
+/// The scene of a comparison and its key: the JSON scene at `path`, or
+/// without one the built-in Cornell box with a pinhole camera and, unless
+/// `keep_motion`, no moving shape (each comparison isolates its own
+/// integral); `width`×`height` replace the camera's resolution.
+struct ComparisonScene {
+  Scene scene;
+  std::string key;
+};
+ComparisonScene comparison_scene(const std::string& path, bool keep_motion, int width, int height);
 
 }  // namespace stratum::render

@@ -39,7 +39,8 @@ struct Image {
   double seconds = 0;
 };
 
-/// Validates the settings against the scene; throws stratum::invalid_argument.
+/// Validates the settings (names, counts, the pixel sampler, and that it can
+/// draw light_samples points per shading point); throws stratum::invalid_argument.
 void validate_settings(const RenderSettings& settings);
 
 /// Renders. `progress(done_passes, total_passes, seconds)` is called after

@@ -1,0 +1,111 @@
+"""stratum.render / compare / comparisons: the renderer from Python (docs/render.md)."""
+import json
+
+import numpy as np
+import pytest
+from scipy import stats
+
+import stratum
+
+# Not hasattr(stratum, "render"): without the renderer that name is the
+# (empty) submodule stratum.render itself.
+pytestmark = pytest.mark.skipif(not hasattr(stratum, "comparisons"), reason="built without the renderer")
+
+
+def scene_file(tmp_path, name, shape, rho, camera):
+    scene = {"camera": camera, "materials": {"grey": {"reflectance": [rho] * 3}},
+             "shapes": [dict(shape, material="grey")], "lights": [{"type": "environment", "radiance": [1, 1, 1]}]}
+    path = tmp_path / f"{name}.json"
+    path.write_text(json.dumps(scene))
+    return path
+
+
+def furnace(tmp_path, rho):
+    """A diffuse sphere under a constant sky of radiance 1: a convex surface
+    never sees itself, so it reflects exactly rho (the white furnace)."""
+    return scene_file(tmp_path, "furnace", {"type": "sphere", "center": [0, 0, 0], "radius": 1}, rho,
+                      {"position": [0, 0, -4], "look_at": [0, 0, 0], "fov": 40, "resolution": [16, 16]})
+
+
+def uniform_plane(tmp_path, rho):
+    """A plane filling the view under the sky: every pixel sees the same integrand."""
+    return scene_file(tmp_path, "plane", {"type": "quad", "corner": [-100, 0, 100], "edge_u": [200, 0, 0],
+                                          "edge_v": [0, 0, -200]}, rho,
+                      {"position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 40, "resolution": [8, 8]})
+
+
+def test_comparisons_are_listed():
+    names = [c["name"] for c in stratum.comparisons()]
+    assert {"shadow-rays", "light-strategy", "hemisphere", "time-pattern", "path", "pixel-samplers"} <= set(names)
+    assert all(c["description"] for c in stratum.comparisons())
+
+
+def test_furnace_is_exact_with_cosine_irradiance(tmp_path):
+    # With cosine-weighted directions every sample is rho exactly (p ∝ f: zero variance, LECTURE.md §3).
+    image, variance = stratum.render(furnace(tmp_path, 0.6), spp=4, integrator="irradiance", light_samples=2,
+                                     hemisphere="cosine", sampler="random", with_variance=True)
+    assert image.shape == (16, 16, 3) and image.dtype == np.float64 and variance.shape == (16, 16, 3)
+    np.testing.assert_allclose(image[7:9, 7:9], 0.6, atol=1e-9)  # the sphere's centre
+    np.testing.assert_allclose(image[[0, 0, -1, -1], [0, -1, 0, -1]], 1.0, atol=1e-12)  # the sky in the corners
+    np.testing.assert_allclose(variance[7:9, 7:9], 0.0, atol=1e-15)
+
+
+def test_uniform_hemisphere_mean_and_variance_have_their_closed_forms(tmp_path):
+    # Y = 2 rho cos θ, cos θ ~ U[0, 1): E = rho, V = rho²/3; the pixel mean of
+    # N eye rays × M directions has variance rho²/(3NM). 64 i.i.d. pixels,
+    # two t-tests, Šidák: α = 0.001 overall, two-sided.
+    rho, n, m = 0.5, 4, 2
+    image, variance = stratum.render(uniform_plane(tmp_path, rho), spp=n, integrator="irradiance", light_samples=m,
+                                     hemisphere="uniform", sampler="random", seed=11, with_variance=True)
+    alpha = 1 - (1 - 0.001) ** 0.5
+    assert stats.ttest_1samp(image[..., 0].ravel(), rho).pvalue > alpha
+    assert stats.ttest_1samp(variance[..., 0].ravel(), rho**2 / (3 * n * m)).pvalue > alpha
+    # power: the variance of one sample (no 1/NM) is rejected
+    assert stats.ttest_1samp(variance[..., 0].ravel(), rho**2 / 3).pvalue < alpha
+
+
+def test_same_seed_same_image_for_any_thread_count():
+    a = stratum.render(width=12, height=8, spp=4, seed=5)
+    b = stratum.render(width=12, height=8, spp=4, seed=5, threads=2)
+    c = stratum.render(width=12, height=8, spp=4, seed=6)
+    assert a.shape == (8, 12, 3)
+    np.testing.assert_array_equal(a, b)
+    assert not np.array_equal(a, c)
+
+
+def test_reference_is_cached(tmp_path):
+    first = stratum.render(width=10, height=8, reference=True, reference_spp=16, cache=tmp_path / "cache")
+    second = stratum.render(width=10, height=8, reference=True, reference_spp=16, cache=tmp_path / "cache")
+    np.testing.assert_array_equal(first.astype(np.float32), second)  # cached as 32-bit EXR
+    assert len(list((tmp_path / "cache").glob("*.exr"))) == 2  # the reference and its variance
+
+
+def test_compare_at_equal_samples_and_equal_time(tmp_path):
+    rows = stratum.compare(builtin="shadow-rays", width=8, height=8, reference_spp=32, cache=tmp_path / "cache")
+    assert [r["label"] for r in rows] == ["1 shadow ray", "16 shadow rays"]
+    assert rows[0]["mse_ratio"] == 1 and all(r["mse"] > 0 and r["spp"] == 4 and r["passes"] == 1 for r in rows)
+    configs = [{"label": "random", "spp": 4, "sampler": "random"}, {"label": "sobol", "spp": 4, "sampler": "sobol"}]
+    timed = stratum.compare(configs=configs, width=8, height=8, reference_spp=32, cache=tmp_path / "cache",
+                            equal_time=0.05, variance_dir=tmp_path / "var")
+    assert [r["label"] for r in timed] == ["random", "sobol"]
+    for r in timed:
+        assert r["seconds"] >= 0.05 and r["spp"] == 4 * r["passes"]
+        assert (tmp_path / "var").is_dir() and r["variance"].startswith(str(tmp_path / "var"))
+
+
+@pytest.mark.parametrize("call, word", [
+    (lambda: stratum.render(spp=0), "spp"),
+    (lambda: stratum.render(width=0), "width"),
+    (lambda: stratum.render(integrator="bdpt", width=4, height=4), "integrator"),
+    (lambda: stratum.render(light_strategy="cone", width=4, height=4), "light-strategy"),
+    (lambda: stratum.render(sampler="no-such", width=4, height=4), "sampler"),
+    (lambda: stratum.render(seed=-1), "seed"),
+    (lambda: stratum.render("/no/such/scene.json"), "scene"),
+    (lambda: stratum.compare(builtin="nope"), "comparison"),
+    (lambda: stratum.compare(configs=[{"colour": 1}], width=4, height=4), "colour"),
+    (lambda: stratum.compare(configs=[{"spp": 1}], builtin="path"), "configs"),
+    (lambda: stratum.compare(equal_time=-1), "equal_time"),
+])
+def test_bad_input_names_the_argument(call, word):
+    with pytest.raises(stratum.InvalidArgument, match=word):
+        call()

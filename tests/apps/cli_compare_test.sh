@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# CLI tests of `stratum compare`: built-in sets, JSON output, equal time,
+# variance images and bad input.
+set -u
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1"
+
+"$stratum" compare --list | grep -q '^shadow-rays' && ok || fail "compare --list"
+"$stratum" compare --builtin shadow-rays --width 8 --height 8 --reference-spp 32 --cache "$tmp/cache" --json >"$tmp/cmp.json" \
+  && /usr/bin/python3 -c "
+import json; d = json.load(open('$tmp/cmp.json')); rows = d['rows']
+assert [r['label'] for r in rows] == ['1 shadow ray', '16 shadow rays'], rows
+assert rows[0]['mse_ratio'] == 1 and rows[1]['mse'] > 0 and rows[1]['efficiency'] > 0" && ok || fail "compare --json"
+ls "$tmp/cache"/*.exr >/dev/null 2>&1 && ok || fail "reference cached as EXR"
+expect_error "comparison" compare --builtin nope
+expect_error "reference-spp" compare --reference-spp 0
+echo '[{"label": "x", "colour": 2}]' >"$tmp/cfg.json"
+expect_error "colour" compare --configs "$tmp/cfg.json" --width 4 --height 4
+expect_error "configs" compare --configs "$tmp/nope.json"
+
+
+# Equal time: every configuration renders for at least the budget; samples
+# are whole passes of its spp; a configuration ~16x costlier per pass
+# (64 vs 1 shadow rays) reaches fewer samples in the same time.
+echo '[{"label": "cheap", "spp": 4, "light_samples": 1, "sampler": "random", "pixel_centers": true},
+       {"label": "costly", "spp": 4, "light_samples": 64, "sampler": "random", "pixel_centers": true}]' >"$tmp/cost.json"
+"$stratum" compare --configs "$tmp/cost.json" --width 16 --height 16 --reference-spp 16 --cache "$tmp/cache" \
+  --equal-time 0.1 --variance-dir "$tmp/var" --json >"$tmp/eq.json" && /usr/bin/python3 -c "
+import json, os; d = json.load(open('$tmp/eq.json')); rows = d['rows']
+assert d['equal_time'] == 0.1 and len(rows) == 2, d
+for r in rows:
+    assert r['seconds'] >= 0.1 and r['passes'] >= 1 and r['spp'] == 4 * r['passes'], r
+    assert os.path.getsize(r['variance']) > 0 and r['variance'].startswith('$tmp/var/'), r
+assert rows[0]['spp'] > rows[1]['spp'], rows" && ok || fail "compare --equal-time --variance-dir"
+"$stratum" compare --width 8 --height 8 --reference-spp 16 --cache "$tmp/cache" --equal-time 0.05 | grep -q "equal time: 0.05 s" \
+  && ok || fail "equal-time table"
+expect_error "equal-time" compare --equal-time -1 --width 4 --height 4 --cache "$tmp/cache"
+touch "$tmp/afile"
+expect_error "variance-dir" compare --variance-dir "$tmp/afile/sub" --width 4 --height 4 --reference-spp 4 --cache "$tmp/cache"
+
+finish
