@@ -17,12 +17,16 @@ namespace stratum::analysis {
 
 const std::vector<MitchellPattern>& mitchell_patterns() {
   static const std::vector<MitchellPattern> patterns{
-      {"Zaremba", "zaremba", {}},
-      {"jittered", "jittered", {}},
-      {"Poisson disk", "poisson-disk", {{"periodic", "1"}}},
-      {"N-rooks", "n-rooks", {}},
-      {"random", "random", {}}};
+      {"Zaremba", "zaremba", {}, ""},
+      {"jittered", "jittered", {}, ""},
+      {"Poisson disk", "poisson-disk", {{"periodic", "1"}}, ""},
+      {"N-rooks", "n-rooks", {}, ""},
+      {"random", "random", {}, ""}};
   return patterns;
+}
+
+std::string mitchell_pattern_id(const MitchellPattern& pattern) {
+  return pattern.randomize.empty() ? pattern.sampler : pattern.sampler + ":" + pattern.randomize;
 }
 
 const MitchellCell& MitchellStudy::cell(const std::string& pattern, std::size_t requested) const {
@@ -39,7 +43,27 @@ SamplerRequest request_for(const MitchellPattern& pattern, std::size_t n, std::u
   request.n = n;
   request.d = 2;
   request.seed = seed;
+  request.randomize = pattern.randomize;
   return request;
+}
+
+/// Every pattern of the study: Mitchell's five, then the extras, each
+/// checked (2D, known randomizer, an id not seen before).
+std::vector<MitchellPattern> study_patterns(const MitchellStudyOptions& options) {
+  std::vector<MitchellPattern> patterns = mitchell_patterns();
+  for (const auto& extra : options.extra_patterns) {
+    const std::string id = mitchell_pattern_id(extra);
+    const SamplerInfo& sampler = find_sampler(extra.sampler);
+    require(sampler.min_dim <= 2 && sampler.max_dim >= 2, "extra_patterns", id, "a sampler that makes 2D points");
+    for (const auto& known : patterns)
+      require(mitchell_pattern_id(known) != id, "extra_patterns", id, "a pattern not already in the study");
+    // The count is checked (and replaced where needed) by nearest_valid_count.
+    if (!extra.randomize.empty() &&
+        std::find(sampler.randomizers.begin(), sampler.randomizers.end(), extra.randomize) == sampler.randomizers.end())
+      throw invalid_argument("extra_patterns", id, "a randomizer that " + sampler.name + " takes");
+    patterns.push_back(extra);
+  }
+  return patterns;
 }
 
 /// The count nearest to `requested` that the sampler accepts (the smaller on a tie).
@@ -89,16 +113,17 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
   require(options.lines >= 1 && options.lines <= 100000000, "lines", options.lines, "must be in [1, 10^8]");
   MitchellStudy study;
   study.options = options;
-  const auto& patterns = mitchell_patterns();
+  study.patterns = study_patterns(options);
+  const auto& patterns = study.patterns;
   const std::size_t counts = options.counts.size(), k = options.realizations;
   for (const auto& pattern : patterns)
     for (std::size_t requested : options.counts) {
       MitchellCell cell;
-      cell.pattern = pattern.sampler;
+      cell.pattern = mitchell_pattern_id(pattern);
       cell.requested = requested;
       cell.n = nearest_valid_count(pattern, requested);
       if (cell.n != requested)
-        study.notes.push_back(pattern.sampler + ": " + std::to_string(cell.n) + " points instead of " +
+        study.notes.push_back(cell.pattern + ": " + std::to_string(cell.n) + " points instead of " +
                               std::to_string(requested) + " (" + find_sampler(pattern.sampler).counts + ")");
       study.cells.push_back(std::move(cell));
     }
@@ -116,7 +141,7 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
       const std::size_t c = task / k, r = task % k;
       const MitchellCell& cell = study.cells[c];
       const PointSet points =
-          generate_points(cell.pattern, request_for(patterns[c / counts], cell.n, hash64(options.seed, r)));
+          generate_points(patterns[c / counts].sampler, request_for(patterns[c / counts], cell.n, hash64(options.seed, r)));
       const PointView view{points.data.get(), points.n, points.d};
       results[task] = random_edge_discrepancy(view, options.lines, hash64(options.seed, r, 1), 1);
       if (cell.requested == spectrum_count && (c % counts) == static_cast<std::size_t>(
@@ -145,7 +170,7 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
     const std::size_t n = views.front().n;
     const int max_frequency = static_cast<int>(std::ceil(3 * std::sqrt(static_cast<double>(n))));
     const RadialPower radial = radial_average(mean_periodogram(views, max_frequency, options.threads));
-    study.spectra.push_back({patterns[p].sampler, n, radial.frequency, radial.power, spectrum_points[p * k]});
+    study.spectra.push_back({mitchell_pattern_id(patterns[p]), n, radial.frequency, radial.power, spectrum_points[p * k]});
   }
   return study;
 }
@@ -157,10 +182,10 @@ std::string mitchell_table(const MitchellStudy& study) {
   text += format("%-14s", "pattern");
   for (std::size_t n : study.options.counts) text += format("%22s", ("N = " + std::to_string(n)).c_str());
   text += "\n";
-  for (const auto& pattern : mitchell_patterns()) {
+  for (const auto& pattern : study.patterns) {
     text += format("%-14s", pattern.label.c_str());
     for (std::size_t n : study.options.counts) {
-      const MitchellCell& cell = study.cell(pattern.sampler, n);
+      const MitchellCell& cell = study.cell(mitchell_pattern_id(pattern), n);
       text += format("%22s", format("%.4g +- %.2g", cell.rms.mean, cell.rms.error).c_str());
     }
     text += "\n";

@@ -192,5 +192,70 @@ TEST(MitchellStudy, SubstitutesTheNearestValidCountAndRejectsBadOptions) {
   EXPECT_NE(error_of(bad).find("invalid counts"), std::string::npos);
 }
 
+TEST(MitchellStudy, ExtraPatternsRunThroughTheSameStudy) {
+  MitchellStudyOptions options;
+  options.counts = {16, 100};
+  options.realizations = 3;
+  options.lines = 500;
+  options.seed = 7;
+  options.spectrum_count = 16;
+  const MitchellStudy plain = run_mitchell_study(options);
+  options.extra_patterns = {{"Sobol (Owen)", "sobol", {}, "owen"}, {"Halton", "halton", {}, "none"}};
+  const MitchellStudy extended = run_mitchell_study(options);
+  ASSERT_EQ(extended.patterns.size(), 7u);
+  ASSERT_EQ(extended.cells.size(), 14u);
+  ASSERT_EQ(extended.spectra.size(), 7u);
+  // Mitchell's five are untouched by the extras.
+  for (std::size_t c = 0; c < plain.cells.size(); ++c) {
+    EXPECT_EQ(extended.cells[c].pattern, plain.cells[c].pattern);
+    EXPECT_EQ(extended.cells[c].rms_values, plain.cells[c].rms_values);
+  }
+  for (std::size_t s = 0; s < plain.spectra.size(); ++s) EXPECT_EQ(extended.spectra[s].power, plain.spectra[s].power);
+  // The extras' cells are the random-edge discrepancies of their registry sets.
+  for (const auto& pattern : options.extra_patterns) {
+    const std::string id = mitchell_pattern_id(pattern);
+    EXPECT_EQ(id, pattern.sampler + ":" + pattern.randomize);
+    for (std::size_t n : options.counts) {
+      const MitchellCell& cell = extended.cell(id, n);
+      for (std::size_t r = 0; r < 3; ++r) {
+        SamplerRequest request;
+        request.n = cell.n;
+        request.d = 2;
+        request.seed = hash64(7, r);
+        request.randomize = pattern.randomize;
+        const PointSet points = generate_points(pattern.sampler, request);
+        const auto direct = random_edge_discrepancy({points.data.get(), points.n, 2}, 500, hash64(7, r, 1));
+        EXPECT_EQ(cell.rms_values[r], direct.rms) << id << " " << n << " " << r;
+      }
+    }
+  }
+  EXPECT_EQ(extended.spectra[5].pattern, "sobol:owen");
+  EXPECT_EQ(extended.spectra[6].pattern, "halton:none");
+  EXPECT_NE(mitchell_table(extended).find("Sobol (Owen)"), std::string::npos);
+  EXPECT_EQ(mitchell_table(plain).find("Sobol (Owen)"), std::string::npos);
+}
+
+TEST(MitchellStudy, RejectsDuplicateUnknownAndUnrandomizableExtras) {
+  MitchellStudyOptions options;
+  options.counts = {16};
+  options.realizations = 1;
+  options.lines = 10;
+  auto message = [&](std::vector<MitchellPattern> extras) {
+    auto bad = options;
+    bad.extra_patterns = std::move(extras);
+    try {
+      run_mitchell_study(bad);
+    } catch (const invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message({{"again", "jittered", {}, ""}}).find("invalid extra_patterns = jittered"), std::string::npos);
+  EXPECT_NE(message({{"a", "sobol", {}, ""}, {"b", "sobol", {}, ""}}).find("invalid extra_patterns = sobol"),
+            std::string::npos);
+  EXPECT_NE(message({{"r", "random", {}, "no-such"}}).find("invalid extra_patterns = random:no-such"), std::string::npos);
+  EXPECT_FALSE(message({{"?", "no-such-sampler", {}, ""}}).empty());
+}
+
 }  // namespace
 }  // namespace stratum::analysis

@@ -14,6 +14,10 @@
 /// patterns is sharper). Zaremba's set is deterministic: its standard error
 /// is that of the random lines alone. Every (pattern, count, realization) is
 /// one oneTBB task; the results are identical for any thread count.
+///
+/// Further registry patterns (options.extra_patterns, e.g. `stratum report
+/// --sampler sobol:owen`) run after Mitchell's five through exactly the same
+/// code: same counts, seeds, lines and spectra.
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -21,6 +25,20 @@
 #include <vector>
 
 namespace stratum::analysis {
+
+/// One pattern: the registry sampler behind it.
+struct MitchellPattern {
+  std::string label;    ///< as in Mitchell's table: "Zaremba", "jittered", ...
+  std::string sampler;  ///< registry name
+  std::map<std::string, std::string> params;  ///< sampler parameters
+  std::string randomize;                      ///< registry randomizer; empty: the sampler's default
+};
+
+/// How cells and spectra name a pattern: the sampler name, or
+/// "sampler:randomizer" when a randomizer is given.
+std::string mitchell_pattern_id(const MitchellPattern& pattern);
+/// Zaremba, jittered, Poisson disk, N-rooks, random.
+const std::vector<MitchellPattern>& mitchell_patterns();
 
 struct MitchellStudyOptions {
   std::vector<std::size_t> counts{16, 256, 1600};
@@ -31,16 +49,10 @@ struct MitchellStudyOptions {
   /// Spectra are computed at this count (0: the largest requested count ≤
   /// 1024, else the smallest), up to frequency ⌈3√n⌉, averaged over the K realizations.
   std::size_t spectrum_count = 0;
+  /// Patterns compared after mitchell_patterns(); each must make 2D points
+  /// and have an id (mitchell_pattern_id) not already in the study.
+  std::vector<MitchellPattern> extra_patterns;
 };
-
-/// One pattern: the registry sampler behind it.
-struct MitchellPattern {
-  std::string label;    ///< as in Mitchell's table: "Zaremba", "jittered", ...
-  std::string sampler;  ///< registry name
-  std::map<std::string, std::string> params;  ///< sampler parameters
-};
-/// Zaremba, jittered, Poisson disk, N-rooks, random.
-const std::vector<MitchellPattern>& mitchell_patterns();
 
 /// Mean and standard error (s/√K; 0 for K = 1) over the realizations.
 struct MeanAndError {
@@ -49,7 +61,7 @@ struct MeanAndError {
 };
 
 struct MitchellCell {
-  std::string pattern;  ///< sampler name
+  std::string pattern;  ///< mitchell_pattern_id (the sampler name for Mitchell's five)
   std::size_t requested = 0;
   std::size_t n = 0;           ///< points actually used
   MeanAndError rms, mean, max;  ///< of the random-edge RMS, mean and max per realization
@@ -57,7 +69,7 @@ struct MitchellCell {
 };
 
 struct MitchellSpectrum {
-  std::string pattern;
+  std::string pattern;  ///< mitchell_pattern_id
   std::size_t n = 0;
   std::vector<double> frequency;  ///< normalized by √n
   std::vector<double> power;
@@ -66,14 +78,17 @@ struct MitchellSpectrum {
 
 struct MitchellStudy {
   MitchellStudyOptions options;
-  std::vector<MitchellCell> cells;  ///< pattern-major, then counts in the given order
-  std::vector<MitchellSpectrum> spectra;
+  std::vector<MitchellPattern> patterns;  ///< mitchell_patterns(), then the extras, in this order
+  std::vector<MitchellCell> cells;  ///< pattern-major (order of `patterns`), then counts in the given order
+  std::vector<MitchellSpectrum> spectra;  ///< one per pattern, order of `patterns`
   std::vector<std::string> notes;  ///< substitutions made (count changes)
   const MitchellCell& cell(const std::string& pattern, std::size_t requested) const;
 };
 
 /// Runs the study; throws stratum::invalid_argument for counts < 2 or > 10^6,
-/// realizations < 1 or > 10^5, lines < 1 or > 10^8, or no counts.
+/// realizations < 1 or > 10^5, lines < 1 or > 10^8, or no counts, and for an
+/// extra pattern that is unknown, cannot make 2D points, takes no such
+/// randomizer, or repeats a pattern id.
 MitchellStudy run_mitchell_study(const MitchellStudyOptions& options);
 
 /// The table as text: one row per pattern, one column per count

@@ -1,0 +1,168 @@
+/// §8 Space-time patterns: samples complete in space but incomplete in time,
+/// the 16 time slots of a pixel assigned to its 4×4 spatial strata by Cook's
+/// pattern (Cook 1986, "Stochastic sampling in computer graphics") or by a
+/// pan-diagonal magic square (every row, column and broken diagonal has the
+/// same sum, so every line of strata has the same mean time; Rosser, Walker
+/// 1939, "The algebraic theory of diabolic magic squares"). The tables come
+/// from include/stratum/spacetime; the line sums are measured from them.
+/// Then the motion-blurred Cornell box rendered with random, Cook and
+/// magic-square time assignments (render::builtin_comparison("time-pattern")).
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "render_support.hpp"
+#include "sections.hpp"
+#include "stratum/spacetime/cook_pattern.hpp"
+#include "stratum/spacetime/magic_square.hpp"
+
+namespace stratum::report {
+
+namespace {
+
+/// The sums of a table's rows, columns, broken diagonals (cells (r, r + k))
+/// and broken antidiagonals (cells (r, k − r)), indices mod m.
+struct LineSums {
+  std::vector<std::uint64_t> rows, columns, diagonals, antidiagonals;
+};
+
+LineSums line_sums(const SlotTable& table) {
+  const std::uint32_t m = table.order;
+  LineSums sums{std::vector<std::uint64_t>(m), std::vector<std::uint64_t>(m), std::vector<std::uint64_t>(m),
+                std::vector<std::uint64_t>(m)};
+  for (std::uint32_t k = 0; k < m; ++k)
+    for (std::uint32_t r = 0; r < m; ++r) {
+      sums.rows[k] += table(k, r);
+      sums.columns[k] += table(r, k);
+      sums.diagonals[k] += table(r, (r + k) % m);
+      sums.antidiagonals[k] += table(r, (k + m - r) % m);
+    }
+  return sums;
+}
+
+/// The smallest slot difference between strata sharing an edge (within the
+/// pixel): how far apart in time Cook's rule puts spatial neighbours.
+std::uint32_t neighbour_separation(const SlotTable& table) {
+  const std::uint32_t m = table.order;
+  std::uint32_t smallest = table.size();
+  for (std::uint32_t r = 0; r < m; ++r)
+    for (std::uint32_t c = 0; c < m; ++c) {
+      const auto gap = [&](std::uint32_t a, std::uint32_t b) {
+        return std::uint32_t(std::abs(std::int64_t(a) - std::int64_t(b)));
+      };
+      if (c + 1 < m) smallest = std::min(smallest, gap(table(r, c), table(r, c + 1)));
+      if (r + 1 < m) smallest = std::min(smallest, gap(table(r, c), table(r + 1, c)));
+    }
+  return smallest;
+}
+
+std::string join(const std::vector<std::uint64_t>& values) {
+  std::string text;
+  for (const auto v : values) text += (text.empty() ? "" : ", ") + std::to_string(v);
+  return text;
+}
+
+bool all_equal(const std::vector<std::uint64_t>& values, std::uint64_t target) {
+  return std::all_of(values.begin(), values.end(), [&](std::uint64_t v) { return v == target; });
+}
+
+}  // namespace
+
+Section space_time_section(SectionContext& context) {
+  Section section = context.start();
+  constexpr std::uint32_t order = 4;
+  const std::uint64_t target = magic_sum(order);
+  const std::pair<std::string, SlotTable> tables[] = {{"Cook pattern", cook_slots(order)},
+                                                      {"pan-diagonal magic square", pandiagonal_magic_square(order)}};
+
+  nlohmann::json panels = nlohmann::json::array();
+  Table sums_table{fmt::format("Line sums of the 4×4 tables, measured (a magic sum is m(m²−1)/2 = {})", target),
+                   {"table", "rows", "columns", "broken diagonals", "broken antidiagonals", "all = magic sum",
+                    "smallest slot gap between edge neighbours"},
+                   {}};
+  std::vector<bool> magic_flags;
+  for (const auto& [name, table] : tables) {
+    panels.push_back({{"title", name}, {"order", table.order}, {"slots", table.slots}});
+    const LineSums sums = line_sums(table);
+    const bool magic = all_equal(sums.rows, target) && all_equal(sums.columns, target) &&
+                       all_equal(sums.diagonals, target) && all_equal(sums.antidiagonals, target);
+    magic_flags.push_back(magic);
+    const std::uint32_t separation = neighbour_separation(table);
+    sums_table.rows.push_back({name, join(sums.rows), join(sums.columns), join(sums.diagonals),
+                               join(sums.antidiagonals), magic ? "yes" : "no", std::to_string(separation)});
+    section.numbers["tables"][name] = {{"slots", table.slots},
+                                       {"row_sums", sums.rows},
+                                       {"column_sums", sums.columns},
+                                       {"diagonal_sums", sums.diagonals},
+                                       {"antidiagonal_sums", sums.antidiagonals},
+                                       {"pandiagonal_magic", magic},
+                                       {"neighbour_separation", separation}};
+  }
+  section.numbers["magic_sum"] = target;
+  section.figures.push_back(context.plot(
+      "report_slot_tables", {{"panels", panels}}, "slot-tables",
+      "Time slot (0–15) of each of the 16 spatial strata of a pixel, rows top to bottom as on the slide; row and "
+      "column sums outside the grid"));
+  section.tables.push_back(std::move(sums_table));
+
+  // Motion blur with each assignment.
+  const RenderScale scale = render_scale(context);
+  const auto scene = render::comparison_scene("", true, scale.width, scale.height);
+  const auto configs = render::builtin_comparison("time-pattern", context.threads(), context.seed());
+  const RenderedComparison comparison = run_comparison(scene, configs, scale.reference_spp, context.cache_dir());
+  // The pixels whose value depends on the time assignment: where the renders
+  // differ (the same film, lens and light samples go to every configuration,
+  // so elsewhere the images agree and the error is common to all).
+  const std::size_t pixels = std::size_t(scale.width) * scale.height;
+  std::vector<bool> moving(pixels, false);
+  std::size_t moving_count = 0;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    for (std::size_t i = 1; i < comparison.images.size() && !moving[p]; ++i)
+      for (int c = 0; c < 3; ++c) moving[p] = moving[p] || comparison.images[i].rgb[3 * p + c] != comparison.images[0].rgb[3 * p + c];
+    moving_count += moving[p];
+  }
+  section.figures.push_back(image_figure(
+      context, comparison_panels(comparison), "motion-blur",
+      fmt::format("The Cornell box with a moving sphere, {}×{} pixels, {} samples per pixel: the reference, then time "
+                  "assigned to the 4×4 strata at random, by Cook's pattern and by the magic square",
+                  scale.width, scale.height, comparison.rows.front().samples)));
+  section.tables.push_back(comparison_table(
+      comparison, fmt::format("Motion blur against a {}-spp reference (whole image)", comparison.reference_spp)));
+  Table region{fmt::format("MSE over the {} pixels whose value depends on the time assignment", moving_count),
+               {"time assignment", "MSE (those pixels)", "ratio (random / this)"},
+               {}};
+  section.numbers["motion_blur"] = comparison_numbers(comparison);
+  section.numbers["motion_blur"]["time_dependent_pixels"] = moving_count;
+  std::vector<double> region_mse;
+  for (std::size_t i = 0; i < comparison.rows.size(); ++i)
+    region_mse.push_back(masked_mean_squared_error(comparison.images[i], comparison.reference, moving));
+  for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
+    const double ratio = region_mse[i] > 0 ? region_mse[0] / region_mse[i] : 0;
+    region.rows.push_back({comparison.rows[i].label, format_number(region_mse[i]), format_number(ratio)});
+    section.numbers["motion_blur"]["rows"][comparison.rows[i].label]["time_dependent_mse"] = region_mse[i];
+  }
+  section.tables.push_back(std::move(region));
+
+  const auto& cook = section.numbers["tables"]["Cook pattern"];
+  section.text.push_back(fmt::format(
+      "Each pixel's 16 samples are complete in space (one per 4×4 stratum) and incomplete in time (one per time "
+      "slot); the tables say which slot each stratum takes. Measured from the tables, every row, column and broken "
+      "diagonal of the magic square sums to {} ({}), while Cook's pattern {} (row sums {}) but keeps edge neighbours "
+      "at least {} slots apart.",
+      target, magic_flags[1] ? "pan-diagonal magic" : "not magic", magic_flags[0] ? "also does" : "does not",
+      join(cook["row_sums"].get<std::vector<std::uint64_t>>()), cook["neighbour_separation"].get<std::uint32_t>()));
+  std::string whole, local;
+  for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
+    const std::string separator = i == 0 ? "" : i + 1 == comparison.rows.size() ? " and " : ", ";
+    whole += separator + fmt::format("{} with {}", format_number(comparison.rows[i].mse), comparison.rows[i].label);
+    local += separator + fmt::format("{} with {}", format_number(region_mse[i]), comparison.rows[i].label);
+  }
+  section.text.push_back(fmt::format(
+      "Rendered with {} samples per pixel against a {}-spp reference, the whole-image MSE is {}; over the {} pixels "
+      "where the renders differ (elsewhere they agree, so their error there is common to all) it is {}.",
+      comparison.rows.front().samples, comparison.reference_spp, whole, moving_count, local));
+  return section;
+}
+
+}  // namespace stratum::report

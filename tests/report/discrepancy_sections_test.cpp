@@ -1,0 +1,166 @@
+/// The report's discrepancy sections (§10 discrepancy, §11 QMC, §12 the
+/// pattern comparison), each run in quick mode through a SectionContext and
+/// checked against oracles: the exact star-discrepancy sweep on regenerated
+/// point sets, L2-star ≤ D* (an L2 norm never exceeds the supremum), the
+/// Koksma–Hlawka bound recomputed from its parts, φ2 by integer bit
+/// reversal, and the binomial rate N^(−1/2) of random points (a z-test with
+/// stated α). Fixed seeds.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "report/sections.hpp"
+#include "stratum/analysis/koksma_hlawka.hpp"
+#include "stratum/analysis/star_discrepancy.hpp"
+#include "stratum/registry.hpp"
+#include "stratum/util/hash.hpp"
+
+namespace stratum::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Staging {
+  fs::path path;
+  Staging() {
+    std::string pattern = (fs::temp_directory_path() / "stratum-disc-sections-XXXXXX").string();
+    path = mkdtemp(pattern.data());
+    fs::create_directory(path / "figures");
+  }
+  ~Staging() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+/// Runs section `id` in quick mode (seed 1, 2 threads); draws its figures when `draw`.
+Section run_section(const std::string& id, std::vector<std::string> extras = {}, bool draw = false) {
+  ReportOptions options;
+  options.quick = true;
+  options.seed = 1;
+  options.threads = 2;
+  options.extra_samplers = std::move(extras);
+  const auto& all = report_sections();
+  const auto info = std::find_if(all.begin(), all.end(), [&](const SectionInfo& s) { return s.id == id; });
+  EXPECT_NE(info, all.end()) << id;
+  if (info == all.end()) return {};
+  Staging staging;
+  std::vector<plot::PlotJob> plots;
+  SectionContext context(options, *info, staging.path, 2, plots);
+  Section section = info->build(context);
+  EXPECT_EQ(section.id, id);
+  EXPECT_FALSE(section.text.empty());
+  EXPECT_FALSE(section.tables.empty());
+  EXPECT_FALSE(section.figures.empty());
+  for (const auto& text : section.text) EXPECT_EQ(text.find("n/a"), std::string::npos) << text;
+  if (draw) {
+    plot::write_plots(plots, 2);
+    for (const auto& figure : section.figures) EXPECT_TRUE(fs::exists(staging.path / figure.file)) << figure.file;
+  }
+  return section;
+}
+
+PointSet points_of(const std::string& sampler, const std::string& randomize, std::uint64_t n, std::uint64_t seed) {
+  SamplerRequest request;
+  request.n = n;
+  request.d = 2;
+  request.seed = seed;
+  request.randomize = randomize;
+  return generate_points(sampler, request);
+}
+
+TEST(DiscrepancySection, PictureBoxesAndValuesMatchTheExactSweep) {
+  const Section section = run_section("discrepancy", {"sobol:owen", "pmj02"}, /*draw=*/true);
+  const auto& numbers = section.numbers;
+  // The picture's sets, regenerated: their D* by the independent sweep.
+  for (const auto& [label, sampler, randomize] :
+       {std::tuple<std::string, std::string, std::string>{"random", "random", ""}, {"hammersley:none", "hammersley", "none"}}) {
+    const PointSet points = points_of(sampler, randomize, 64, 1);
+    const double star = analysis::star_discrepancy_2d({points.data.get(), 64, 2});
+    EXPECT_NEAR(numbers["picture"][label]["star"].get<double>(), star, 1e-13) << label;
+    EXPECT_LE(numbers["picture"][label]["grid_max_abs"].get<double>(), star + 1e-15);
+  }
+  // sobol:owen is already compared, so only pmj02 is added.
+  EXPECT_EQ(numbers["patterns"].size(), 7u);
+  EXPECT_TRUE(numbers["patterns"].contains("pmj02"));
+  const auto& functions = analysis::variation_test_functions();
+  std::size_t checks = 0;
+  for (const auto& [label, entry] : numbers["patterns"].items()) {
+    const double star = entry["star"], l2 = entry["l2_star"];
+    EXPECT_GT(l2, 0);
+    EXPECT_LE(l2, star) << label;  // ‖Δ‖₂ ≤ sup |Δ|
+    for (const auto& function : functions) {
+      const auto& check = entry["koksma_hlawka"][function.name];
+      EXPECT_NEAR(check["bound"].get<double>(), function.variation * star, 1e-15) << label;
+      EXPECT_NEAR(check["error"].get<double>(), std::fabs(check["estimate"].get<double>() - function.integral), 1e-15);
+      EXPECT_TRUE(check["holds"].get<bool>()) << label << " " << function.name;
+      ++checks;
+    }
+  }
+  EXPECT_EQ(numbers["koksma_hlawka"]["checks"].get<std::size_t>(), checks);
+  EXPECT_EQ(numbers["koksma_hlawka"]["held"].get<std::size_t>(), checks);
+  // Hammersley's D* at N = 256, regenerated.
+  const PointSet hammersley = points_of("hammersley", "none", 256, 1);
+  EXPECT_NEAR(numbers["patterns"]["hammersley:none"]["star"].get<double>(),
+              analysis::star_discrepancy_2d({hammersley.data.get(), 256, 2}), 1e-13);
+}
+
+TEST(QmcSection, RadicalInverseTableAndExactCurves) {
+  const Section section = run_section("qmc", {"sobol:owen"});
+  const auto& numbers = section.numbers;
+  ASSERT_EQ(numbers["phi2"].size(), 16u);
+  for (unsigned i = 0; i < 16; ++i) {
+    const unsigned reversed = ((i & 1) << 3) | ((i & 2) << 1) | ((i & 4) >> 1) | ((i & 8) >> 3);
+    EXPECT_EQ(numbers["phi2"][i].get<double>(), reversed / 16.0) << i;
+  }
+  EXPECT_TRUE(numbers["phi2_equals_mirrored_digits"].get<bool>());
+  EXPECT_EQ(section.tables.front().rows[4][2], "0.0010₂");  // the lecture's 4 = 100₂ → 0.001₂
+  const auto& hammersley = numbers["curves"]["hammersley:none"];
+  for (std::size_t k : {0u, 5u}) {
+    const auto n = static_cast<std::uint64_t>(hammersley["n"][k].get<double>());
+    const PointSet points = points_of("hammersley", "none", n, 0);
+    EXPECT_NEAR(hammersley["star"][k].get<double>(), analysis::star_discrepancy_2d({points.data.get(), n, 2}), 1e-13);
+    EXPECT_EQ(hammersley["standard_error"][k].get<double>(), 0.0);  // deterministic: one set
+  }
+  EXPECT_GT(numbers["curves"]["random"]["standard_error"][0].get<double>(), 0.0);
+  EXPECT_TRUE(numbers["curves"].contains("sobol:owen"));
+  // D*·N/log N is bounded for Hammersley (Niederreiter 1992, Thm 3.8): over
+  // a 128-fold range of N it moves by far less than N does.
+  EXPECT_LT(numbers["ratio_spread"]["hammersley"].get<double>(), 4.0);
+}
+
+TEST(PatternsSection, MitchellTableExtrasAndTheRandomRate) {
+  const Section section = run_section("patterns", {"sobol:owen", "jittered"});
+  const auto& patterns = section.numbers["patterns"];
+  EXPECT_EQ(patterns.size(), 6u);  // Mitchell's five and sobol:owen; jittered is one of the five
+  ASSERT_TRUE(patterns.contains("sobol:owen"));
+  std::string lowest;
+  double lowest_value = INFINITY;
+  for (const auto& [id, entry] : patterns.items()) {
+    ASSERT_EQ(entry["cells"].size(), 3u);
+    EXPECT_EQ(entry["cells"][2]["requested"].get<std::size_t>(), 1600u);
+    if (entry["cells"][2]["rms"].get<double>() < lowest_value)
+      lowest_value = entry["cells"][2]["rms"], lowest = entry["label"];
+  }
+  EXPECT_EQ(section.numbers["lowest_at_1600"].get<std::string>(), lowest);
+  // Random points: E[D²] = c/N exactly, so the slope of log mean RMS on log N
+  // is −1/2 up to noise. z-test with the standard error propagated from the
+  // cells' standard errors (delta method); two-sided α = 1e-3, z = 3.29.
+  const auto& cells = patterns["random"]["cells"];
+  double mean_log_n = 0;
+  for (const auto& cell : cells) mean_log_n += std::log(cell["n"].get<double>()) / 3;
+  double sxx = 0;
+  for (const auto& cell : cells) sxx += std::pow(std::log(cell["n"].get<double>()) - mean_log_n, 2);
+  double variance = 0;
+  for (const auto& cell : cells) {
+    const double weight = (std::log(cell["n"].get<double>()) - mean_log_n) / sxx;
+    variance += std::pow(weight * cell["rms_se"].get<double>() / cell["rms"].get<double>(), 2);
+  }
+  EXPECT_NEAR(patterns["random"]["slope"].get<double>(), -0.5, 3.29 * std::sqrt(variance));
+}
+
+}  // namespace
+}  // namespace stratum::report
