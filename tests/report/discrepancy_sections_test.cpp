@@ -12,7 +12,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "report/sections.hpp"
+#include "section_harness.hpp"
 #include "stratum/analysis/koksma_hlawka.hpp"
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/registry.hpp"
@@ -23,38 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Staging {
-  fs::path path;
-  Staging() {
-    std::string pattern = (fs::temp_directory_path() / "stratum-disc-sections-XXXXXX").string();
-    path = mkdtemp(pattern.data());
-    fs::create_directory(path / "figures");
-  }
-  ~Staging() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
 /// Runs section `id` in quick mode (seed 1, 2 threads); draws its figures when `draw`.
 Section run_section(const std::string& id, std::vector<std::string> extras = {}, bool draw = false) {
-  ReportOptions options;
-  options.quick = true;
-  options.seed = 1;
-  options.threads = 2;
-  options.extra_samplers = std::move(extras);
-  const auto& all = report_sections();
-  const auto info = std::find_if(all.begin(), all.end(), [&](const SectionInfo& s) { return s.id == id; });
-  EXPECT_NE(info, all.end()) << id;
-  if (info == all.end()) return {};
-  Staging staging;
+  testing::TempFolder staging;
   std::vector<plot::PlotJob> plots;
-  SectionContext context(options, *info, staging.path, 2, plots);
-  Section section = info->build(context);
-  EXPECT_EQ(section.id, id);
-  EXPECT_FALSE(section.text.empty());
-  EXPECT_FALSE(section.tables.empty());
-  EXPECT_FALSE(section.figures.empty());
+  Section section = testing::run_quick_section(id, staging, plots, std::move(extras));
   for (const auto& text : section.text) EXPECT_EQ(text.find("n/a"), std::string::npos) << text;
   if (draw) {
     plot::write_plots(plots, 2);

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "report/sections.hpp"
+#include "section_harness.hpp"
 #include "stratum/render/scene.hpp"
 
 namespace stratum::report {
@@ -21,39 +21,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "stratum-render-sections-XXXXXX").string();
-    path = mkdtemp(pattern.data());
-    fs::create_directory(path / "figures");
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
 /// Runs section `id` in quick mode (seed 1, 2 threads, a fresh reference
 /// cache) and checks what every section must have.
 Section run_section(const std::string& id) {
-  TempFolder staging;
-  ReportOptions options;
-  options.quick = true;
-  options.seed = 1;
-  options.threads = 2;
-  options.cache_dir = (staging.path / "cache").string();
-  const auto& all = report_sections();
-  const auto info = std::find_if(all.begin(), all.end(), [&](const SectionInfo& s) { return s.id == id; });
-  EXPECT_NE(info, all.end()) << id;
-  if (info == all.end()) return {};
+  testing::TempFolder staging;
   std::vector<plot::PlotJob> plots;
-  SectionContext context(options, *info, staging.path, 2, plots);
-  Section section = info->build(context);
-  EXPECT_EQ(section.id, id);
+  Section section = testing::run_quick_section(id, staging, plots);
   EXPECT_GE(section.text.size(), 2u);
-  EXPECT_FALSE(section.tables.empty());
-  EXPECT_FALSE(section.figures.empty());
   // Every figure is a queued plot (renders are tiled by report_images.py).
   EXPECT_EQ(plots.size(), section.figures.size());
   for (const auto& figure : section.figures) EXPECT_EQ(figure.file.rfind("figures/" + id + "-", 0), 0u) << figure.file;

@@ -14,48 +14,22 @@
 #include <numbers>
 #include <set>
 
-#include "report/sections.hpp"
+#include "section_harness.hpp"
 
 namespace stratum::report {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A temporary folder removed at the end of the test.
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "stratum-sections-XXXXXX").string();
-    path = mkdtemp(pattern.data());
-    fs::create_directory(path / "figures");
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
 struct SectionRun {
   Section section;
-  TempFolder folder;
+  testing::TempFolder folder;
 };
 
 /// Runs section `id` in quick mode (seed 1, 2 threads) and draws its figures.
 void run_section(const std::string& id, SectionRun& run, std::vector<std::string> extras = {}) {
-  ReportOptions options;
-  options.quick = true;
-  options.seed = 1;
-  options.threads = 2;
-  options.extra_samplers = std::move(extras);
-  const auto& all = report_sections();
-  const auto info = std::find_if(all.begin(), all.end(), [&](const SectionInfo& s) { return s.id == id; });
-  ASSERT_NE(info, all.end()) << id;
   std::vector<plot::PlotJob> plots;
-  SectionContext context(options, *info, run.folder.path, 2, plots);
-  run.section = info->build(context);
-  EXPECT_EQ(run.section.id, id);
-  EXPECT_FALSE(run.section.text.empty());
-  EXPECT_FALSE(run.section.tables.empty());
+  run.section = testing::run_quick_section(id, run.folder, plots, std::move(extras));
   ASSERT_FALSE(run.section.figures.empty());
   plot::write_plots(plots, 2);
   for (const auto& figure : run.section.figures) {
