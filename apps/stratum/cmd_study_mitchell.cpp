@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "stratum/plot.hpp"
+#include "stratum/analysis/convergence.hpp"
 #include "stratum/analysis/mitchell_study.hpp"
 #include "stratum/util/error.hpp"
 
@@ -20,15 +21,16 @@ struct MitchellOptions {
   std::int64_t threads = 1;
   bool json = false;
   std::string plot;
+  std::vector<std::string> extras;  ///< name or name:randomizer
 };
 
 nlohmann::json to_json(const analysis::MitchellStudy& study) {
   nlohmann::json patterns = nlohmann::json::array();
-  for (std::size_t p = 0; p < analysis::mitchell_patterns().size(); ++p) {
-    const auto& pattern = analysis::mitchell_patterns()[p];
+  for (std::size_t p = 0; p < study.patterns.size(); ++p) {
+    const auto& pattern = study.patterns[p];
     nlohmann::json cells = nlohmann::json::array();
     for (std::size_t requested : study.options.counts) {
-      const auto& cell = study.cell(pattern.sampler, requested);
+      const auto& cell = study.cell(analysis::mitchell_pattern_id(pattern), requested);
       cells.push_back({{"requested", cell.requested}, {"n", cell.n}, {"rms", cell.rms.mean}, {"rms_se", cell.rms.error},
                        {"mean", cell.mean.mean}, {"mean_se", cell.mean.error}, {"max", cell.max.mean},
                        {"max_se", cell.max.error}});
@@ -58,6 +60,10 @@ void run_mitchell(const MitchellOptions& options) {
   study_options.realizations = static_cast<std::size_t>(options.realizations);
   study_options.lines = static_cast<std::size_t>(options.lines);
   study_options.seed = options.seed;
+  for (const auto& extra : options.extras) {
+    const auto choice = analysis::parse_sampler_choice(extra);
+    study_options.extra_patterns.push_back({extra, choice.name, {}, choice.randomize});
+  }
   study_options.threads = static_cast<unsigned>(options.threads);
   const auto study = analysis::run_mitchell_study(study_options);
   const nlohmann::json data = to_json(study);
@@ -76,6 +82,8 @@ void add_study_mitchell_command(CLI::App& study) {
   command->add_option("--lines", options->lines, "random lines L per realization")->capture_default_str();
   command->add_option("--seed", options->seed, "seed of patterns and lines")->capture_default_str();
   command->add_option("--threads", options->threads, "threads (0: all cores)")->capture_default_str();
+  command->add_option("--sampler", options->extras,
+                      "an extra registry pattern (name or name:randomizer) compared after Mitchell's five; repeatable");
   command->add_flag("--json", options->json, "print the table as JSON");
   command->add_option("--plot", options->plot, "write a figure (PNG): each pattern, its radial spectrum, the table");
   command->callback([options] { run_mitchell(*options); });

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "stratum/analysis/convergence.hpp"
 #include "stratum/analysis/mitchell_study.hpp"
 
 namespace py = pybind11;
@@ -16,24 +17,28 @@ py::dict mean_and_error(const analysis::MeanAndError& value) {
 }
 
 py::dict study_mitchell(const std::vector<std::size_t>& counts, std::size_t realizations, std::size_t lines,
-                        std::uint64_t seed, unsigned threads) {
+                        std::uint64_t seed, unsigned threads, const std::vector<std::string>& extras) {
   analysis::MitchellStudyOptions options;
   options.counts = counts;
   options.realizations = realizations;
   options.lines = lines;
   options.seed = seed;
   options.threads = threads;
+  for (const auto& extra : extras) {
+    const auto choice = analysis::parse_sampler_choice(extra);
+    options.extra_patterns.push_back({extra, choice.name, {}, choice.randomize});
+  }
   analysis::MitchellStudy study;
   {
     py::gil_scoped_release release;
     study = analysis::run_mitchell_study(options);
   }
   py::list patterns;
-  for (std::size_t p = 0; p < analysis::mitchell_patterns().size(); ++p) {
-    const auto& pattern = analysis::mitchell_patterns()[p];
+  for (std::size_t p = 0; p < study.patterns.size(); ++p) {
+    const auto& pattern = study.patterns[p];
     py::list cells;
     for (std::size_t requested : counts) {
-      const auto& cell = study.cell(pattern.sampler, requested);
+      const auto& cell = study.cell(analysis::mitchell_pattern_id(pattern), requested);
       cells.append(py::dict(py::arg("requested") = cell.requested, py::arg("n") = cell.n,
                             py::arg("rms") = mean_and_error(cell.rms), py::arg("mean") = mean_and_error(cell.mean),
                             py::arg("max") = mean_and_error(cell.max), py::arg("rms_values") = cell.rms_values));
@@ -56,7 +61,7 @@ py::dict study_mitchell(const std::vector<std::size_t>& counts, std::size_t real
 
 void bind_mitchell(py::module_& m) {
   m.def("study_mitchell", &study_mitchell, py::arg("counts"), py::arg("realizations"), py::arg("lines"), py::arg("seed"),
-        py::arg("threads"), "Mitchell's comparison of patterns by random-edge discrepancy");
+        py::arg("threads"), py::arg("extras"), "Mitchell's comparison of patterns by random-edge discrepancy");
 }
 
 }  // namespace stratum::python

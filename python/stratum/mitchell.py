@@ -26,11 +26,13 @@ def _integer(name, value, low, high, allowed):
 
 
 def study_mitchell(counts=(16, 256, 1600), realizations: int = 20, lines: int = 10000, seed: int = 0,
-                   threads: int = 1) -> dict:
+                   threads: int = 1, samplers=()) -> dict:
     """Random-edge discrepancy of Zaremba, jittered, Poisson-disk (periodic),
     N-rooks and random patterns at each count, over `realizations` K pattern
     realizations with `lines` L random lines each, beside each pattern's
     radially averaged power spectrum. Same numbers as ``stratum study mitchell``.
+    ``samplers``: extra registry patterns ("name" or "name:randomizer", 2D)
+    compared after Mitchell's five, as ``--sampler`` does.
 
     Returns a dict: "patterns" (one per pattern: "label", "sampler",
     "params", "cells" (per count: "requested", "n" actually used, "rms",
@@ -48,4 +50,6 @@ def study_mitchell(counts=(16, 256, 1600), realizations: int = 20, lines: int = 
     lines = _integer("lines", lines, 1, 10**8, "must be an integer in [1, 10^8]")
     seed = _integer("seed", seed, 0, 2**64 - 1, "must be an integer in [0, 2^64)")
     threads = _integer("threads", threads, 0, 1024, "must be an integer in [0, 1024] (0: all cores)")
-    return _stratum.study_mitchell(counts, realizations, lines, seed, threads)
+    if isinstance(samplers, (str, bytes)):
+        samplers = [samplers]
+    return _stratum.study_mitchell(counts, realizations, lines, seed, threads, [str(s) for s in samplers])

@@ -114,3 +114,12 @@ def test_study_mitchell_structure_and_ordering():
 def test_study_mitchell_bad_input(kwargs, message):
     with pytest.raises(stratum.InvalidArgument, match=message):
         stratum.study_mitchell(**kwargs)
+
+
+def test_study_mitchell_extra_samplers_add_rows_and_leave_the_five_unchanged():
+    five = stratum.study_mitchell(counts=(16, 64), realizations=2, lines=200, seed=3)
+    seven = stratum.study_mitchell(counts=(16, 64), realizations=2, lines=200, seed=3, samplers=["sobol:owen", "halton"])
+    assert [p["label"] for p in seven["patterns"]][5:] == ["sobol:owen", "halton"]
+    assert seven["patterns"][:5] == five["patterns"]
+    with pytest.raises(stratum.InvalidArgument, match="sampler"):
+        stratum.study_mitchell(counts=(16,), samplers=["no-such"])

@@ -77,4 +77,16 @@ expect_error "counts" study mitchell --counts 16,abc
 expect_error "invalid lines = 0" study mitchell --counts 16 --lines 0 --plot "$tmp/bad.png"
 [ ! -e "$tmp/bad.png" ] && ok || fail "a failed study left a figure"
 
+# Extra patterns (--sampler): one more row each; Mitchell's five rows are unchanged by them.
+"$stratum" study mitchell --counts 16,64 --realizations 2 --lines 200 --seed 3 >"$tmp/five.txt" && ok || fail "five"
+"$stratum" study mitchell --counts 16,64 --realizations 2 --lines 200 --seed 3 --sampler sobol:owen --sampler halton \
+  >"$tmp/seven.txt" && ok || fail "extras"
+grep -q '^sobol:owen ' "$tmp/seven.txt" && grep -q '^halton ' "$tmp/seven.txt" && ok || fail "extra rows: $(cat "$tmp/seven.txt")"
+[ "$(tail -n +3 "$tmp/seven.txt" | grep -c '+-')" = 7 ] && ok || fail "seven rows"
+diff <(grep -E '^(Zaremba|jittered|Poisson|N-rooks|random) ' "$tmp/five.txt") \
+     <(grep -E '^(Zaremba|jittered|Poisson|N-rooks|random) ' "$tmp/seven.txt") >/dev/null && ok || fail "extras changed the five rows"
+expect_error "sampler" study mitchell --counts 16 --sampler no-such
+expect_error "randomizer" study mitchell --counts 16 --sampler sobol:no-such
+expect_error "jittered" study mitchell --counts 16 --sampler jittered
+
 finish
