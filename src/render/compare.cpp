@@ -296,7 +296,7 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
 }
 
 std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
-                                const CompareOptions& options) {
+                                const CompareOptions& options, CompareImages* images) {
   require(options.reference_spp >= 1 && options.reference_spp <= (1u << 24), "reference-spp", options.reference_spp,
           "must be in [1, 2^24]");
   require(std::isfinite(options.equal_time) && options.equal_time >= 0 && options.equal_time <= 1e6, "equal-time",
@@ -314,10 +314,17 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
     const CompareConfig& config = configs[index];
     const std::string estimand = config.settings.integrator + "/" + std::to_string(config.settings.max_depth) +
                                  (config.settings.pixel_centers ? "/centres" : "");
-    if (!references.count(estimand))
-      references[estimand] = reference_image(scene, scene_key, config.settings, options.reference_spp, options.cache_dir);
+    if (!references.count(estimand)) {
+      bool cached = false;
+      references[estimand] =
+          reference_image(scene, scene_key, config.settings, options.reference_spp, options.cache_dir, &cached);
+      if (images) {
+        images->reference_cached = images->reference_cached && cached;
+        if (references.size() == 1) images->reference = references[estimand];
+      }
+    }
     CompareRow row;
-    const Image image = options.equal_time > 0 ? render_equal_time(scene, config.settings, options.equal_time, &row.passes)
+    Image image = options.equal_time > 0 ? render_equal_time(scene, config.settings, options.equal_time, &row.passes)
                                                : render(scene, config.settings);
     row.label = config.label;
     row.samples = image.samples;
@@ -330,6 +337,7 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
       write_variance_image(image, row.variance_path);
     }
     rows.push_back(row);
+    if (images) images->images.push_back(std::move(image));
   }
   for (CompareRow& row : rows) {
     row.mse_ratio = rows.front().mse / row.mse;

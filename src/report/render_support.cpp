@@ -3,10 +3,8 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <map>
 
 #include "sections.hpp"
-#include "stratum/estimators/efficiency.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::report {
@@ -17,37 +15,16 @@ RenderScale render_scale(const SectionContext& context) {
 
 RenderedComparison run_comparison(const render::ComparisonScene& scene, const std::vector<render::CompareConfig>& configs,
                                   std::uint32_t reference_spp, const std::string& cache_dir) {
-  require(!configs.empty(), "configs", "(none)", "must name at least one configuration");
+  render::CompareOptions options;
+  options.reference_spp = reference_spp;
+  options.cache_dir = cache_dir;
+  render::CompareImages pictures;
   RenderedComparison result;
+  result.rows = render::compare(scene.scene, scene.key, configs, options, &pictures);
+  result.images = std::move(pictures.images);
+  result.reference = std::move(pictures.reference);
+  result.reference_cached = pictures.reference_cached;
   result.reference_spp = reference_spp;
-  result.reference_cached = true;
-  // One reference per estimand, as render::compare keys them.
-  std::map<std::string, render::Image> references;
-  for (const render::CompareConfig& config : configs) {
-    const render::RenderSettings& s = config.settings;
-    const std::string estimand = s.integrator + "/" + std::to_string(s.max_depth) + (s.pixel_centers ? "/centres" : "");
-    if (!references.count(estimand)) {
-      bool cached = false;
-      references[estimand] = render::reference_image(scene.scene, scene.key, s, reference_spp, cache_dir, &cached);
-      result.reference_cached = result.reference_cached && cached;
-      if (references.size() == 1) result.reference = references[estimand];
-    }
-    const render::Image& reference = references[estimand];
-    render::Image image = render::render(scene.scene, s);
-    render::CompareRow row;
-    row.label = config.label;
-    row.samples = image.samples;
-    row.mse = render::mean_squared_error(image, reference);
-    row.relative_mse = render::relative_mean_squared_error(image, reference);
-    row.seconds = image.seconds;
-    row.efficiency = estimators::efficiency(row.mse, std::max(row.seconds, 1e-9));
-    result.rows.push_back(row);
-    result.images.push_back(std::move(image));
-  }
-  for (render::CompareRow& row : result.rows) {
-    row.mse_ratio = result.rows.front().mse / row.mse;
-    row.efficiency_ratio = row.efficiency / result.rows.front().efficiency;
-  }
   double sum = 0;
   for (const double v : result.reference.variance) sum += v;
   result.reference_variance = result.reference.variance.empty() ? 0 : sum / double(result.reference.variance.size());

@@ -36,9 +36,9 @@ struct RenderedComparison {
   double reference_variance = 0;
 };
 
-/// Renders each configuration of `configs` on `scene` and measures it as
-/// render::compare does: MSE, relative MSE, seconds, efficiency =
-/// 1 / (MSE × seconds), and the MSE and efficiency ratios to the first row.
+/// Renders each configuration of `configs` on `scene` and measures it with
+/// render::compare (MSE, relative MSE, seconds, efficiency = 1 / (MSE ×
+/// seconds), ratios to the first row), keeping the images for the figures.
 RenderedComparison run_comparison(const render::ComparisonScene& scene, const std::vector<render::CompareConfig>& configs,
                                   std::uint32_t reference_spp, const std::string& cache_dir);
 

@@ -37,6 +37,13 @@ struct CompareOptions {
   std::string variance_dir;
 };
 
+/// The pictures behind a comparison, for callers that show them (the report).
+struct CompareImages {
+  std::vector<Image> images;     ///< one per configuration, in order
+  Image reference;               ///< the first configuration's reference
+  bool reference_cached = true;  ///< every reference was loaded from the cache
+};
+
 /// Names of the built-in comparisons, each with a one-line description.
 const std::vector<std::pair<std::string, std::string>>& builtin_comparisons();
 
@@ -75,9 +82,10 @@ std::string reference_cache_path(const Scene& scene, const std::string& scene_ke
                                  std::uint32_t spp, const std::string& cache_dir);
 
 /// Runs every configuration, at equal samples or at equal time
-/// (options.equal_time), and measures it against its reference.
+/// (options.equal_time), and measures it against its reference; `images`,
+/// when given, receives the renders and the first reference.
 std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
-                                const CompareOptions& options);
+                                const CompareOptions& options, CompareImages* images = nullptr);
 
 /// Equal-time rendering (LECTURE.md §2: efficiency at equal cost): passes
 /// of the configuration's spp samples per pixel until `seconds` have passed
