@@ -145,6 +145,19 @@ TEST(Digits, TablesCoverTheIndexRange) {
   EXPECT_EQ(Scrambler({}, {2, 3}, 0).table_entries(), 2u);
 }
 
+// Small index ranges build only the table rows they keep; those rows equal
+// the full tables' bit for bit (chunks straddled, partly and fully covered).
+TEST(Digits, TruncatedTablesEqualFullTables) {
+  const std::vector<std::uint32_t> bases = {2, 3, 5, 67, 8161};
+  const digits_detail::PositionalDigitScrambler<RotateByPositionRule> full({}, bases, ~0ull);
+  for (std::uint64_t max_index : {0ull, 1ull, 2ull, 3ull, 4ull, 15ull, 16ull, 100ull, 4095ull, 4097ull, 20000ull}) {
+    const digits_detail::PositionalDigitScrambler<RotateByPositionRule> small({}, bases, max_index);
+    for (unsigned dim = 0; dim < bases.size(); ++dim)
+      for (std::uint64_t index = 0; index <= std::min<std::uint64_t>(max_index, 300); ++index)
+        ASSERT_EQ(small.fraction(index, dim), full.fraction(index, dim)) << max_index << " " << dim << " " << index;
+  }
+}
+
 TEST(Digits, FillEqualsSampleAcrossRunsAndTableEdges) {
   const std::vector<std::uint32_t> bases = {2, 3, 67, 8161};
   const digits_detail::PositionalDigitScrambler<RotateByPositionRule> scrambler({}, bases, 20000);

@@ -247,24 +247,26 @@ class PositionalDigitScrambler {
       rest /= size;
       chunks_.push_back({tables_.size(), entries, 0});
       if (entries == 0) continue;
-      // Sums of π_j(a_j)·W_j over the chunk's positions for every digit
-      // string, built one position at a time (least significant digit first).
+      // Sums of π_j(a_j)·W_j over the chunk's positions for the digit strings
+      // 0..entries−1, built one position at a time (least significant digit
+      // first): after t positions, partial[x] for x < min(b^t, entries). Only
+      // the rows the table keeps are built (a few when max_index is small).
       partial.assign(1, 0);
       for (unsigned t = 0; t < d.digits_per_chunk; ++t) {
         const unsigned position = c * d.digits_per_chunk + t;
         const std::size_t previous = partial.size();
-        if (position >= d.positions) {
-          partial.resize(previous * base, 0);  // digits beyond K add nothing
-          for (std::size_t a = 1; a < base; ++a)
-            std::copy_n(partial.begin(), previous, partial.begin() + static_cast<std::ptrdiff_t>(a * previous));
-          continue;
+        const std::size_t next = static_cast<std::size_t>(std::min<std::uint64_t>(previous * base, entries));
+        const bool beyond = position >= d.positions;  // digits beyond K add nothing
+        if (!beyond) rule_.permutation(dim, position, base, images.data());
+        const u128 weight = beyond ? 0 : weights_[d.first_weight + position];
+        partial.resize(next);
+        // Row a·previous + x = row x plus digit a at this position; rows are
+        // written from the top so row x (< previous) is read before its update.
+        for (std::size_t a = (next + previous - 1) / previous; a-- > 0;) {
+          const std::size_t count = std::min(previous, next - a * previous);
+          const u128 add = beyond ? 0 : static_cast<u128>(images[a]) * weight;
+          for (std::size_t x = count; x-- > 0;) partial[a * previous + x] = partial[x] + add;
         }
-        rule_.permutation(dim, position, base, images.data());
-        const u128 weight = weights_[d.first_weight + position];
-        partial.resize(previous * base);
-        for (std::size_t a = base; a-- > 0;)
-          for (std::size_t x = 0; x < previous; ++x)
-            partial[a * previous + x] = partial[x] + static_cast<u128>(images[a]) * weight;
       }
       for (std::uint64_t r = 0; r < entries; ++r) tables_.push_back(static_cast<std::uint64_t>(partial[r] >> 64));
     }
