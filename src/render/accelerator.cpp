@@ -8,13 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "disk_geometry.hpp"
+
 namespace stratum::render {
 
 struct Accelerator::Embree {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::size_t> shape_of_geometry;
-  std::vector<Vec3> quad_normals;  ///< by shape: unit edge_u × edge_v of quads (computed once, not per hit)
+  std::vector<Vec3> quad_normals;  ///< by shape: unit edge_u × edge_v of quads, disks' normals (once, not per hit)
   ~Embree() {
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
@@ -44,7 +46,9 @@ void set_vertices(RTCGeometry geometry, const Shape& shape, RTCFormat format, st
 
 RTCGeometry make_geometry(RTCDevice device, const Shape& shape) {
   RTCGeometry geometry = nullptr;
-  if (shape.type == ShapeType::sphere) {
+  if (shape.type == ShapeType::disk) {
+    geometry = make_disk_geometry(device, shape);
+  } else if (shape.type == ShapeType::sphere) {
     geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
     set_vertices(geometry, shape, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1, [&](float* v, Vec3 shift) {
       const Vec3 c = shape.center + shift;
@@ -85,7 +89,8 @@ double scene_extent(const Scene& scene) {
   auto grow = [&](Vec3 p) { extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)}); };
   for (const Shape& shape : scene.shapes) {
     for (Vec3 shift : {Vec3{}, shape.motion}) {
-      if (shape.type == ShapeType::sphere) grow(shape.center + shift + Vec3{shape.radius, shape.radius, shape.radius});
+      if (shape.type == ShapeType::sphere || shape.type == ShapeType::disk)
+        grow(shape.center + shift + Vec3{shape.radius, shape.radius, shape.radius});
       if (shape.type == ShapeType::quad) grow(shape.corner + shift), grow(shape.corner + shape.edge_u + shape.edge_v + shift);
       for (Vec3 v : shape.vertices) grow(v + shift);
     }
@@ -115,6 +120,7 @@ Accelerator::Accelerator(const Scene& scene) : embree_(std::make_unique<Embree>(
   for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
     if (shape.type == ShapeType::quad) embree_->quad_normals[s] = normalize(cross(shape.edge_u, shape.edge_v));
+    if (shape.type == ShapeType::disk) embree_->quad_normals[s] = shape.normal;
     if (shape.type == ShapeType::triangles && shape.indices.empty()) continue;
     RTCGeometry geometry = make_geometry(embree_->device, shape);
     rtcCommitGeometry(geometry);
@@ -149,7 +155,7 @@ std::optional<Hit> Accelerator::intersect(const Ray& ray) const {
   const Shape& shape = scene_->shapes[hit.shape];
   if (shape.type == ShapeType::sphere) {
     hit.normal = normalize(hit.position - (shape.center + ray.time * shape.motion));
-  } else if (shape.type == ShapeType::quad) {
+  } else if (shape.type == ShapeType::quad || shape.type == ShapeType::disk) {
     hit.normal = embree_->quad_normals[hit.shape];
   } else {
     hit.primitive = query.hit.primID;

@@ -7,6 +7,7 @@
 
 #include "stratum/render/bsdf.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/warps/disk.hpp"
 #include "stratum/warps/projected_solid_angle.hpp"
 #include "stratum/warps/sphere.hpp"
 #include "stratum/warps/spherical_rectangle.hpp"
@@ -99,8 +100,14 @@ std::optional<SphericalTriangle<double>> spherical_triangle(const Triangle& t, V
   }
 }
 
-/// A uniform point on a sphere or triangle mesh at time 0 (its normal written to ny).
+/// A uniform point on a sphere, disk or triangle mesh at time 0 (its normal written to ny).
 Vec3 point_on_shape(const Shape& shape, std::array<double, 2> u, Vec3& ny) {
+  if (shape.type == ShapeType::disk) {  // Shirley and Chiu's concentric map: uniform by area
+    ny = shape.normal;
+    const auto p = sample_concentric_disk(u);
+    const Frame frame(shape.normal);
+    return shape.center + shape.radius * (p[0] * frame.s + p[1] * frame.t);
+  }
   if (shape.type == ShapeType::sphere) {
     ny = to_vec(sample_uniform_sphere(u));
     return shape.center + shape.radius * ny;
@@ -189,6 +196,7 @@ std::optional<LightSample> sample_triangle_solid_angle(const Shape& shape, const
 double shape_area(const Shape& shape) {
   if (shape.type == ShapeType::quad) return length(cross(shape.edge_u, shape.edge_v));
   if (shape.type == ShapeType::sphere) return 4 * pi * shape.radius * shape.radius;
+  if (shape.type == ShapeType::disk) return pi * shape.radius * shape.radius;
   return shape.triangle_cdf.empty() ? 0.0 : shape.triangle_cdf.back();
 }
 
@@ -197,6 +205,7 @@ LightGeometry light_geometry(const Scene& scene, const Light& light) {
   if (light.type != LightType::area) return geometry;
   const Shape& shape = scene.shapes[light.shape];
   if (shape.type == ShapeType::quad) geometry.normal = normalize(cross(shape.edge_u, shape.edge_v));
+  if (shape.type == ShapeType::disk) geometry.normal = shape.normal;
   geometry.area = shape_area(shape);
   geometry.rectangular = rectangular_quad(shape);
   geometry.quad = shape.type == ShapeType::quad;

@@ -165,15 +165,22 @@ Shape read_shape(const json& value, const std::string& where, const std::map<std
       shape.indices.push_back({tri[0].get<unsigned>(), tri[1].get<unsigned>(), tri[2].get<unsigned>()});
     }
   } else if (type == "disk") {
-    shape.type = ShapeType::triangles;
     const Vec3 normal = r.vec3("normal");
     require(length(normal) > 0, r.name("normal"), r.at("normal").dump(), "must be a non-zero vector");
     const double radius = r.number("radius");
     require(radius > 0, r.name("radius"), radius, "must be > 0");
-    const double segments = r.number("segments", 64);
-    require(segments >= 3 && segments <= 65536 && segments == std::floor(segments), r.name("segments"), segments,
-            "must be an integer in [3, 65536]");
-    make_disk(shape, r.vec3("center"), normal, radius, int(segments));
+    if (r.has("segments")) {  // the inscribed polygon, on request
+      shape.type = ShapeType::triangles;
+      const double segments = r.number("segments");
+      require(segments >= 3 && segments <= 65536 && segments == std::floor(segments), r.name("segments"), segments,
+              "must be an integer in [3, 65536]");
+      make_disk(shape, r.vec3("center"), normal, radius, int(segments));
+    } else {  // the exact disk
+      shape.type = ShapeType::disk;
+      shape.center = r.vec3("center");
+      shape.normal = normalize(normal);
+      shape.radius = radius;
+    }
   } else if (type == "mesh") {
     shape.type = ShapeType::triangles;
     const std::filesystem::path file = r.text("file");

@@ -65,6 +65,12 @@ void validate_scene(Scene& scene, std::vector<std::string>* warnings) {
     if (shape.type == ShapeType::sphere) {
       require_finite(shape.center, name + ".center");
       require(std::isfinite(shape.radius) && shape.radius > 0, name + ".radius", shape.radius, "must be finite and > 0");
+    } else if (shape.type == ShapeType::disk) {
+      require_finite(shape.center, name + ".center");
+      require_finite(shape.normal, name + ".normal");
+      require(std::abs(length(shape.normal) - 1) < 1e-9, name + ".normal", length(shape.normal),
+              "must be a unit vector (its length is shown)");
+      require(std::isfinite(shape.radius) && shape.radius > 0, name + ".radius", shape.radius, "must be finite and > 0");
     } else if (shape.type == ShapeType::quad) {
       require_finite(shape.corner, name + ".corner");
       require_finite(shape.edge_u, name + ".edge_u");

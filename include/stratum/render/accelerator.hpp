@@ -1,7 +1,8 @@
 #pragma once
 /// Ray queries on a Scene through Embree 3 (Wald et al. 2014, "Embree: a
-/// kernel framework for efficient CPU ray tracing"): triangles, quads and
-/// spheres, each with two time steps when it moves, so that a ray's time
+/// kernel framework for efficient CPU ray tracing"): triangles, quads,
+/// spheres and exact disks (user geometry, disk_geometry.cpp), each with two
+/// time steps when it moves, so that a ray's time
 /// picks its position along the linear motion (motion blur). Thread-safe
 /// after construction; one instance per scene, which must outlive it.
 #include <cstddef>

@@ -14,9 +14,15 @@
 ///     meets the sphere, i.e. the visible cap (Shirley, Wang, Zimmerman 1996,
 ///     "Monte Carlo techniques for direct lighting calculations"; pbrt-v4
 ///     §6.2.4), p_ω = 1/(2π(1 − cos θ_max)), sin θ_max = r/d;
-///   - triangle meshes (and disks, which are triangle fans) by solid angle: a
-///     triangle picked by area, then uniform over the spherical triangle it
-///     subtends (Arvo 1995, warps/spherical_triangle.hpp), p_ω = (A_k/A)/Ω_k.
+///   - triangle meshes (and disks given `segments`, triangle fans) by solid
+///     angle: a triangle picked by area, then uniform over the spherical
+///     triangle it subtends (Arvo 1995, warps/spherical_triangle.hpp),
+///     p_ω = (A_k/A)/Ω_k.
+///   - exact disks by area under every strategy: a uniform point by the
+///     concentric map (Shirley, Chiu 1997), p_ω = d² / (cos θ_y π r²). A disk
+///     subtends no spherical polygon with a closed-form uniform map, so, as
+///     pbrt-v4's Disk does, its "solid-angle" sample is the area sample with
+///     its density in solid angle.
 /// The projected-solid-angle strategy applies to rectangular quads; spheres
 /// and triangles fall back to its solid-angle sampling, parallelogram quads
 /// (and spheres seen from inside) to area sampling. Point lights are deltas;
@@ -47,7 +53,7 @@ struct LightSample {
 /// What sampling one light needs from its shape, computed once per scene
 /// (render() builds one per light) instead of once per sample.
 struct LightGeometry {
-  Vec3 normal;               ///< quad: unit normal (edge_u × edge_v)
+  Vec3 normal;               ///< quad: unit normal (edge_u × edge_v); disk: its normal
   double area = 0;           ///< area of the emitting shape
   bool rectangular = false;  ///< quad with perpendicular edges (spherical-rectangle strategies)
   Vec3 emission;             ///< the shape's material's emitted radiance

@@ -41,7 +41,7 @@ struct Material {
   double exponent = 20;             ///< glossy: Phong exponent (larger: sharper highlight), in [0, 1e6]
 };
 
-enum class ShapeType { sphere, quad, triangles };
+enum class ShapeType { sphere, quad, triangles, disk };
 
 /// A shape; `motion` is its translation at shutter close relative to
 /// shutter open (linear in time, Embree's two time steps).
@@ -49,7 +49,8 @@ struct Shape {
   ShapeType type = ShapeType::quad;
   std::size_t material = 0;  ///< index into Scene::materials
   Vec3 center{}, motion{};
-  double radius = 0;               ///< sphere
+  double radius = 0;               ///< sphere, disk
+  Vec3 normal{};                   ///< disk: unit normal (the emitting side); centre and radius above
   Vec3 corner{}, edge_u{}, edge_v{};  ///< quad: corner + s·edge_u + t·edge_v, s, t ∈ [0,1]
   std::vector<Vec3> vertices;      ///< triangles
   std::vector<std::array<unsigned, 3>> indices;
