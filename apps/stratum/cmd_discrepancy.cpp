@@ -2,12 +2,11 @@
 /// points' dimension) of a point file or of a sampler's points, as text or JSON.
 #include <fmt/core.h>
 
-#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "point_input.hpp"
 #include "stratum/analysis/measures.hpp"
-#include "stratum/io/read_points.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 
@@ -16,35 +15,11 @@ namespace stratum::cli {
 namespace {
 namespace sa = stratum::analysis;
 
-struct DiscrepancyOptions {
-  std::string file, sampler, randomize, measure;
-  std::optional<std::int64_t> n, d;
-  std::uint64_t seed = 0;
-  std::int64_t threads = 1;
+struct DiscrepancyOptions : PointInput {
+  std::string measure;
   std::vector<std::string> params;
   bool json = false;
 };
-
-PointSet load_points(const DiscrepancyOptions& o) {
-  if (o.file.empty() == o.sampler.empty())
-    throw invalid_argument("input", o.file.empty() ? "(none)" : o.file + " and --sampler " + o.sampler,
-                           "give either a point FILE or --sampler S -n N [-d D]");
-  if (!o.file.empty()) {
-    if (o.n || o.d) throw invalid_argument("-n/-d", o.file, "apply only to --sampler; a FILE has its own size");
-    return io::read_points_strict(o.file);
-  }
-  require(o.n.has_value(), "n", "(missing)", "--sampler needs -n N");
-  require(*o.n >= 1, "n", *o.n, "must be a positive integer");
-  const std::int64_t d = o.d.value_or(2);
-  require(d >= 1 && d <= std::numeric_limits<unsigned>::max(), "d", d, "must be a positive integer");
-  SamplerRequest request;
-  request.n = static_cast<std::uint64_t>(*o.n);
-  request.d = static_cast<unsigned>(d);
-  request.seed = o.seed;
-  request.randomize = o.randomize;
-  request.threads = static_cast<unsigned>(o.threads);
-  return generate_points(o.sampler, request);
-}
 
 nlohmann::json result_json(const std::string& name, const sa::MeasureResult& r) {
   nlohmann::json out = {{"name", name}, {"kind", r.kind}, {"value", r.value}, {"extras", r.extras}};
@@ -128,13 +103,8 @@ std::string measure_help() {
 void add_discrepancy_command(CLI::App& app) {
   auto o = std::make_shared<DiscrepancyOptions>();
   auto* command = app.add_subcommand("discrepancy", "Measure a point set: discrepancies, stratification, geometry");
-  command->add_option("file", o->file, "point file (.txt whitespace, .csv, .npy float64); or use --sampler");
+  add_point_input_options(*command, *o);
   command->add_option("-m,--measure", o->measure, measure_help())->required();
-  command->add_option("-s,--sampler", o->sampler, "measure this sampler's points instead of a file");
-  command->add_option("-n", o->n, "number of points (with --sampler)");
-  command->add_option("-d", o->d, "dimensions (with --sampler; default 2)");
-  command->add_option("--seed", o->seed, "seed of the sampler's randomization")->capture_default_str();
-  command->add_option("--randomize", o->randomize, "the sampler's randomizer (default: its own)");
   command->add_option("-p,--param", o->params, "measure parameter key=value (repeatable)");
   command->add_option("--threads", o->threads, "threads (results do not depend on it)")->capture_default_str();
   command->add_flag("--json", o->json, "print JSON");

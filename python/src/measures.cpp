@@ -7,10 +7,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bindings.hpp"
 #include "stratum/analysis/l2_discrepancy.hpp"
+#include "stratum/analysis/local_discrepancy.hpp"
 #include "stratum/analysis/measures.hpp"
 #include "stratum/util/error.hpp"
 
@@ -75,6 +77,23 @@ double scipy_discrepancy(const Array& x, const std::string& method, bool iterati
   return kind == sa::L2Kind::star ? std::sqrt(squared) : squared;
 }
 
+/// Δ on the (R+1)×(R+1) grid of corners as an array [j, i] (y = j/R, x = i/R).
+py::array_t<double> local_discrepancy(const Array& x, std::int64_t resolution) {
+  const sa::PointView view = view_of(x);
+  require(view.d == 2, "d", view.d, "the local discrepancy needs 2D points");
+  require(resolution >= 1 && resolution <= 4096, "resolution", resolution, "must be in [1, 4096]");
+  sa::check_unit_cube(view);
+  sa::LocalDiscrepancyGrid grid;
+  {
+    py::gil_scoped_release release;
+    grid = sa::local_discrepancy_grid(view, static_cast<std::size_t>(resolution));
+  }
+  const auto side = static_cast<py::ssize_t>(grid.resolution + 1);
+  py::array_t<double> out({side, side});
+  std::copy(grid.values.begin(), grid.values.end(), out.mutable_data());
+  return out;
+}
+
 double update_centered(const Array& x_new, const Array& sample, double initial) {
   const sa::PointView view = view_of(sample);
   if (x_new.ndim() != 1 || static_cast<std::size_t>(x_new.shape(0)) != view.d)
@@ -89,6 +108,7 @@ void bind_measures(py::module_& m) {
   m.def("measure", &measure, py::arg("x"), py::arg("name"), py::arg("threads"), py::arg("params"));
   m.def("scipy_discrepancy", &scipy_discrepancy, py::arg("x"), py::arg("method"), py::arg("iterative"),
         py::arg("threads"));
+  m.def("local_discrepancy", &local_discrepancy, py::arg("x"), py::arg("resolution"));
   m.def("update_centered_discrepancy", &update_centered, py::arg("x_new"), py::arg("sample"), py::arg("initial"));
 }
 

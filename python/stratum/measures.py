@@ -33,7 +33,7 @@ import numpy as np
 from . import _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["measures", "measure", "discrepancy"]
+__all__ = ["measures", "measure", "discrepancy", "local_discrepancy"]
 
 # scipy.stats.qmc.discrepancy's method names and the registry measure behind each.
 _SCIPY_METHODS = {"CD": "cd", "WD": "wd", "MD": "md", "L2-star": "l2-star"}
@@ -131,3 +131,17 @@ def discrepancy(x, method: str = "CD", threads: int = 1, **params) -> float:
         warnings.warn(f"{method}: only bounds were computed, [{result['lower']}, {result['upper']}]; "
                       "returning the upper bound (stratum.measure gives both)", stacklevel=2)
     return result["value"]
+
+
+def local_discrepancy(x, resolution: int = 64) -> np.ndarray:
+    """Local discrepancy of 2D points on the grid of corners (i/R, j/R), i, j = 0..R.
+
+    Returns an array D of shape (R + 1, R + 1) with D[j, i] = n(x, y)/N - x*y at
+    x = i/R, y = j/R, where n counts the points in [0, x) x [0, y) (LECTURE.md
+    §10). max |D| is a lower bound on the star discrepancy; the box attaining
+    D* itself is ``measure(x, "star-box")``. Raises InvalidArgument for d != 2,
+    R outside [1, 4096] or a point outside [0, 1].
+    """
+    if isinstance(resolution, (bool, np.bool_)) or not isinstance(resolution, (numbers.Integral, np.integer)):
+        raise InvalidArgument(f"invalid resolution = {resolution!r}: must be an integer in [1, 4096]")
+    return _stratum.local_discrepancy(_points(x), int(resolution))

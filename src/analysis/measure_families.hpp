@@ -9,4 +9,5 @@ std::vector<MeasureInfo> l2();        // measures_l2.cpp: l2-star, cd, wd, md
 std::vector<MeasureInfo> star();      // measures_star.cpp: star (exact and bounds)
 std::vector<MeasureInfo> edge();      // measures_edge.cpp: edge, edge-random
 std::vector<MeasureInfo> geometry();  // measures_geometry.cpp: t-value, latin, min-distance, poisson-radius
+std::vector<MeasureInfo> local();     // measures_local.cpp: star-box, koksma-hlawka (2D)
 }  // namespace stratum::analysis::measure_families

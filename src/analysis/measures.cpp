@@ -12,7 +12,7 @@ const std::vector<MeasureInfo>& measures() {
   static const std::vector<MeasureInfo> all = [] {
     std::vector<MeasureInfo> list;
     namespace f = measure_families;
-    for (auto family : {f::l2, f::star, f::edge, f::geometry}) {
+    for (auto family : {f::l2, f::star, f::local, f::edge, f::geometry}) {
       auto part = family();
       list.insert(list.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
     }

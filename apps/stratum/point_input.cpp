@@ -1,0 +1,40 @@
+#include "point_input.hpp"
+
+#include <limits>
+
+#include "stratum/io/read_points.hpp"
+#include "stratum/util/error.hpp"
+
+namespace stratum::cli {
+
+void add_point_input_options(CLI::App& command, PointInput& input) {
+  command.add_option("file", input.file, "point file (.txt whitespace, .csv, .npy float64); or use --sampler");
+  command.add_option("-s,--sampler", input.sampler, "measure this sampler's points instead of a file");
+  command.add_option("-n", input.n, "number of points (with --sampler)");
+  command.add_option("-d", input.d, "dimensions (with --sampler; default 2)");
+  command.add_option("--seed", input.seed, "seed of the sampler's randomization")->capture_default_str();
+  command.add_option("--randomize", input.randomize, "the sampler's randomizer (default: its own)");
+}
+
+PointSet load_points(const PointInput& o) {
+  if (o.file.empty() == o.sampler.empty())
+    throw invalid_argument("input", o.file.empty() ? "(none)" : o.file + " and --sampler " + o.sampler,
+                           "give either a point FILE or --sampler S -n N [-d D]");
+  if (!o.file.empty()) {
+    if (o.n || o.d) throw invalid_argument("-n/-d", o.file, "apply only to --sampler; a FILE has its own size");
+    return io::read_points_strict(o.file);
+  }
+  require(o.n.has_value(), "n", "(missing)", "--sampler needs -n N");
+  require(*o.n >= 1, "n", *o.n, "must be a positive integer");
+  const std::int64_t d = o.d.value_or(2);
+  require(d >= 1 && d <= std::numeric_limits<unsigned>::max(), "d", d, "must be a positive integer");
+  SamplerRequest request;
+  request.n = static_cast<std::uint64_t>(*o.n);
+  request.d = static_cast<unsigned>(d);
+  request.seed = o.seed;
+  request.randomize = o.randomize;
+  request.threads = static_cast<unsigned>(o.threads);
+  return generate_points(o.sampler, request);
+}
+
+}  // namespace stratum::cli

@@ -1,0 +1,29 @@
+#pragma once
+/// The points a measuring command reads: a point FILE, or a registry
+/// sampler's points (--sampler S -n N [-d D] [--seed] [--randomize]).
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "stratum/registry.hpp"
+
+namespace stratum::cli {
+
+struct PointInput {
+  std::string file, sampler, randomize;
+  std::optional<std::int64_t> n, d;
+  std::uint64_t seed = 0;
+  std::int64_t threads = 1;
+};
+
+/// Adds FILE, --sampler, -n, -d, --seed and --randomize to `command`.
+void add_point_input_options(CLI::App& command, PointInput& input);
+
+/// The points: read from the file, or generated (default d = 2). Throws
+/// invalid_argument naming the option for both or neither source, -n/-d
+/// with a file, or a bad n or d.
+PointSet load_points(const PointInput& input);
+
+}  // namespace stratum::cli
