@@ -6,7 +6,10 @@
 // rays) in the same run, on the same number of threads. Counters: rays/s of
 // both, samples/s of the integrator, and their ratio (target ≥ 0.8 on one
 // thread), by wall-clock time and by process CPU time (ratio_cpu: less
-// sensitive to other processes preempting this one on a loaded machine).
+// sensitive to other processes preempting this one on a loaded machine), and
+// ratio_traced without render()'s BVH build (timed alone each iteration;
+// the bare scene's build is untimed), which matters for the third argument's
+// scene 1, the Cornell box with a 131k-triangle sphere mesh.
 // The second argument picks the pixel sampler: random, sobol, jittered and
 // pmj02 take the PixelSampler's direct paths, halton the registry per
 // (pixel, dimension).
@@ -23,6 +26,8 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <string>
 #include <limits>
 #include <vector>
 
@@ -52,9 +57,38 @@ RenderSettings bench_settings(unsigned threads, const char* sampler = "random") 
   return s;
 }
 
-Scene bench_scene() {
+/// A UV sphere of `rings` × 2·`rings` quads (two triangles each), outward-facing.
+Shape mesh_sphere(Vec3 center, double radius, int rings, std::size_t material) {
+  Shape shape;
+  shape.type = ShapeType::triangles;
+  shape.material = material;
+  const int segments = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = M_PI * i / rings, phi = 2 * M_PI * j / segments;
+      shape.vertices.push_back(center + radius * Vec3{std::sin(theta) * std::cos(phi), std::cos(theta),
+                                                      std::sin(theta) * std::sin(phi)});
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const unsigned a = unsigned(i * segments + j), b = unsigned(i * segments + (j + 1) % segments);
+      const unsigned c = a + unsigned(segments), d = b + unsigned(segments);
+      shape.indices.push_back({a, c, b});
+      shape.indices.push_back({b, c, d});
+    }
+  return shape;
+}
+
+/// 0: the Cornell box (18 primitives: Embree's cheapest rays); 1: the same
+/// with a 131k-triangle sphere mesh in the air (a scene where a ray costs
+/// what it costs in production), to show how the ratio follows Embree's share.
+Scene bench_scene(int kind = 0) {
   Scene scene = cornell_box();
   scene.camera.width = scene.camera.height = kSize;
+  if (kind == 1) {
+    scene.shapes.push_back(mesh_sphere({160, 260, 380}, 90, 256, scene.shapes[0].material));
+    validate_scene(scene);
+  }
   return scene;
 }
 
@@ -201,14 +235,14 @@ double process_cpu_seconds() {
 void BM_DirectVsBareEmbree(benchmark::State& state) {
   const unsigned threads = unsigned(state.range(0));
   const char* sampler = kSamplers[std::size_t(state.range(1))];
-  state.SetLabel(sampler);
-  const Scene scene = bench_scene();
+  state.SetLabel(std::string(sampler) + (state.range(2) == 1 ? " mesh-sphere" : ""));
+  const Scene scene = bench_scene(int(state.range(2)));
   const RenderSettings settings = bench_settings(threads, sampler);
   const Recorded rays = record(scene, settings);
   const BareScene bare(scene);
   const double ray_count = double(rays.eye.size() + rays.shadow.size());
   tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
-  double render_seconds = 0, bare_seconds = 0, render_cpu = 0, bare_cpu = 0;
+  double render_seconds = 0, bare_seconds = 0, render_cpu = 0, bare_cpu = 0, build_seconds = 0;
   std::int64_t iterations = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
@@ -221,6 +255,11 @@ void BM_DirectVsBareEmbree(benchmark::State& state) {
     benchmark::DoNotOptimize(trace(bare, rays));
     bare_seconds += seconds_since(start);
     bare_cpu += process_cpu_seconds() - cpu;
+    // render() builds its BVH each call; the bare scene's was built once,
+    // untimed. The same build, timed alone, for ratio_traced.
+    start = std::chrono::steady_clock::now();
+    { const Accelerator build(scene); }
+    build_seconds += seconds_since(start);
     ++iterations;
   }
   const double integrator_rate = ray_count * double(iterations) / render_seconds;
@@ -231,6 +270,8 @@ void BM_DirectVsBareEmbree(benchmark::State& state) {
   state.counters["samples_per_s"] = double(kSize * kSize * kSpp) * double(iterations) / render_seconds;
   state.counters["ratio"] = integrator_rate / bare_rate;
   state.counters["ratio_cpu"] = bare_cpu / render_cpu;
+  state.counters["ratio_traced"] = bare_seconds / (render_seconds - build_seconds);  // without the BVH build
+  state.counters["build_ms"] = 1e3 * build_seconds / double(iterations);
 }
 
 /// The fixed cost of one render() call (Embree device and BVH, buffers,
@@ -246,8 +287,9 @@ void BM_RenderSetup(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_DirectVsBareEmbree)
-    ->ArgsProduct({{1, 2}, {0, 1, 2, 3, 4}})
-    ->ArgNames({"threads", "sampler"})
+    ->ArgsProduct({{1, 2}, {0, 1, 2, 3, 4}, {0}})
+    ->ArgsProduct({{1}, {0, 1, 2, 3}, {1}})
+    ->ArgNames({"threads", "sampler", "scene"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);

@@ -17,6 +17,9 @@ struct Accelerator::Embree {
   RTCScene scene = nullptr;
   std::vector<std::size_t> shape_of_geometry;
   std::vector<Vec3> quad_normals;  ///< by shape: unit edge_u × edge_v of quads, disks' normals (once, not per hit)
+  /// by shape, by triangle: unit (v1 − v0) × (v2 − v0), computed once: per
+  /// hit it would read the index and three vertices, cache misses on a large mesh.
+  std::vector<std::vector<Vec3>> triangle_normals;
   ~Embree() {
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
@@ -117,10 +120,16 @@ Accelerator::Accelerator(const Scene& scene) : embree_(std::make_unique<Embree>(
   if (!embree_->device) throw std::runtime_error("Embree: cannot create a device");
   embree_->scene = rtcNewScene(embree_->device);
   embree_->quad_normals.resize(scene.shapes.size());
+  embree_->triangle_normals.resize(scene.shapes.size());
   for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
     if (shape.type == ShapeType::quad) embree_->quad_normals[s] = normalize(cross(shape.edge_u, shape.edge_v));
     if (shape.type == ShapeType::disk) embree_->quad_normals[s] = shape.normal;
+    if (shape.type == ShapeType::triangles)
+      for (const auto& tri : shape.indices) {
+        const Vec3 a = shape.vertices[tri[0]], b = shape.vertices[tri[1]], c = shape.vertices[tri[2]];
+        embree_->triangle_normals[s].push_back(normalize(cross(b - a, c - a)));
+      }
     if (shape.type == ShapeType::triangles && shape.indices.empty()) continue;
     RTCGeometry geometry = make_geometry(embree_->device, shape);
     rtcCommitGeometry(geometry);
@@ -159,9 +168,7 @@ std::optional<Hit> Accelerator::intersect(const Ray& ray) const {
     hit.normal = embree_->quad_normals[hit.shape];
   } else {
     hit.primitive = query.hit.primID;
-    const auto& tri = shape.indices[query.hit.primID];
-    const Vec3 a = shape.vertices[tri[0]], b = shape.vertices[tri[1]], c = shape.vertices[tri[2]];
-    hit.normal = normalize(cross(b - a, c - a));
+    hit.normal = embree_->triangle_normals[hit.shape][query.hit.primID];
   }
   return hit;
 }
