@@ -5,7 +5,6 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <iostream>
 
 #include "commands.hpp"
 #include "point_input.hpp"
@@ -43,13 +42,7 @@ void run_local(const LocalOptions& o) {
   const std::size_t side = grid.resolution + 1;
   PointSet table{side, side, std::make_unique<double[]>(side * side)};
   std::copy(grid.values.begin(), grid.values.end(), table.data.get());
-  if (o.output.empty() || o.output == "-") {
-    std::ios::sync_with_stdio(false);
-    io::write_points(std::cout, table, format);
-    std::cout.flush();
-  } else {
-    io::write_points_file(o.output, table, format);
-  }
+  write_table(o.output, table, format);
 }
 }  // namespace
 

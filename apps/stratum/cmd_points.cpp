@@ -2,10 +2,10 @@
 /// it as text, CSV or .npy (stdout without -o; files written atomically).
 #include <fmt/core.h>
 
-#include <iostream>
 #include <limits>
 
 #include "commands.hpp"
+#include "point_input.hpp"
 #include "stratum/io/points.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
@@ -50,13 +50,7 @@ void run_points(const PointsOptions& options) {
   }
   const io::PointFormat format = io::parse_point_format(options.format);
   const PointSet points = generate_points(options.sampler, request);
-  if (options.output.empty() || options.output == "-") {
-    std::ios::sync_with_stdio(false);
-    io::write_points(std::cout, points, format);
-    std::cout.flush();
-  } else {
-    io::write_points_file(options.output, points, format);
-  }
+  write_table(options.output, points, format);
 }
 }  // namespace
 

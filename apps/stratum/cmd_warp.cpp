@@ -5,10 +5,10 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <iostream>
 #include <sstream>
 
 #include "commands.hpp"
+#include "point_input.hpp"
 #include "stratum/io/points.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
@@ -88,13 +88,7 @@ void run_warp(const WarpOptions& options) {
     for (std::size_t k = 0; k < out_dim; ++k) rows.data[i * rows.d + k] = points[i * out_dim + k];
     rows.data[i * rows.d + out_dim] = pdf[i];
   }
-  if (options.output.empty() || options.output == "-") {
-    std::ios::sync_with_stdio(false);
-    io::write_points(std::cout, rows, format);
-    std::cout.flush();
-  } else {
-    io::write_points_file(options.output, rows, format);
-  }
+  write_table(options.output, rows, format);
 }
 }  // namespace
 

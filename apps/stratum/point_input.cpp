@@ -1,5 +1,6 @@
 #include "point_input.hpp"
 
+#include <iostream>
 #include <limits>
 
 #include "stratum/io/read_points.hpp"
@@ -35,6 +36,16 @@ PointSet load_points(const PointInput& o) {
   request.randomize = o.randomize;
   request.threads = static_cast<unsigned>(o.threads);
   return generate_points(o.sampler, request);
+}
+
+void write_table(const std::string& output, const PointSet& table, io::PointFormat format) {
+  if (output.empty() || output == "-") {
+    std::ios::sync_with_stdio(false);
+    io::write_points(std::cout, table, format);
+    std::cout.flush();
+  } else {
+    io::write_points_file(output, table, format);
+  }
 }
 
 }  // namespace stratum::cli

@@ -1,12 +1,14 @@
 #pragma once
 /// The points a measuring command reads: a point FILE, or a registry
-/// sampler's points (--sampler S -n N [-d D] [--seed] [--randomize]).
+/// sampler's points (--sampler S -n N [-d D] [--seed] [--randomize]); and
+/// where a command's table goes (-o FILE or stdout).
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
+#include "stratum/io/points.hpp"
 #include "stratum/registry.hpp"
 
 namespace stratum::cli {
@@ -25,5 +27,9 @@ void add_point_input_options(CLI::App& command, PointInput& input);
 /// invalid_argument naming the option for both or neither source, -n/-d
 /// with a file, or a bad n or d.
 PointSet load_points(const PointInput& input);
+
+/// Writes `table` to `output` atomically (io::write_points_file), or to
+/// stdout when `output` is empty or "-".
+void write_table(const std::string& output, const PointSet& table, io::PointFormat format);
 
 }  // namespace stratum::cli

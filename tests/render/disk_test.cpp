@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../warps/chi2.hpp"
+#include "irradiance_estimate.hpp"
 #include "render/disk_geometry.hpp"
 #include "stratum/render/accelerator.hpp"
 #include "stratum/render/bsdf.hpp"
@@ -114,17 +115,8 @@ TEST(RenderExactDisk, MovesLinearlyOverTheShutter) {
   EXPECT_TRUE(accelerator.intersect({{-1.4, 0, 0}, {0, 1, 0}, 0.0}));
 }
 
-/// Mean and standard error of L cos θ_x / p over n light samples (the
-/// irradiance estimator) from x with normal n.
 std::pair<double, double> irradiance(const Scene& scene, Vec3 x, Vec3 n, LightStrategy strategy, int samples) {
-  double sum = 0, sum2 = 0;
-  for (int i = 0; i < samples; ++i) {
-    const auto s = sample_light(scene, scene.lights[0], x, n, 0, {uniform01(31, i, 0), uniform01(31, i, 1)}, strategy);
-    const double v = s ? s->radiance.x * std::max(0.0, dot(n, s->wi)) / s->pdf : 0.0;
-    sum += v, sum2 += v * v;
-  }
-  const double mean = sum / samples;
-  return {mean, std::sqrt((sum2 / samples - mean * mean) / (samples - 1))};
+  return testing_support::irradiance(scene, x, n, strategy, samples, 31);
 }
 
 TEST(RenderExactDisk, IrradianceOnTheAxisMatchesTheClosedForm) {

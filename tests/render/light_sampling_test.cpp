@@ -12,6 +12,7 @@
 #include <string>
 
 #include "../warps/chi2.hpp"
+#include "irradiance_estimate.hpp"
 #include "stratum/render/bsdf.hpp"
 #include "stratum/render/lights.hpp"
 #include "stratum/render/render.hpp"
@@ -128,16 +129,8 @@ TEST(RenderLightSampling, RectangleDirectionsAreUniformOverItsSolidAngle) {
   EXPECT_GT(result.p_value, chi2_level()) << result.table;
 }
 
-/// Mean and standard error of L cos θ / p over `samples` light samples at x.
 std::pair<double, double> irradiance(const Scene& scene, Vec3 x, Vec3 n, LightStrategy strategy, int samples) {
-  double sum = 0, sum2 = 0;
-  for (int i = 0; i < samples; ++i) {
-    const auto s = sample_light(scene, scene.lights[0], x, n, 0, {uniform01(5, i, 0), uniform01(5, i, 1)}, strategy);
-    const double v = s ? s->radiance.x * std::max(0.0, dot(n, s->wi)) / s->pdf : 0.0;
-    sum += v, sum2 += v * v;
-  }
-  const double mean = sum / samples;
-  return {mean, std::sqrt(std::max(0.0, sum2 / samples - mean * mean) / (samples - 1))};
+  return testing_support::irradiance(scene, x, n, strategy, samples, 5);
 }
 
 TEST(RenderLightSampling, IrradianceMatchesClosedFormsForBothStrategies) {
