@@ -109,3 +109,25 @@ def test_compare_at_equal_samples_and_equal_time(tmp_path):
 def test_bad_input_names_the_argument(call, word):
     with pytest.raises(stratum.InvalidArgument, match=word):
         call()
+
+
+def test_exact_disk_light_covers_exactly_its_closed_form_footprint(tmp_path):
+    # A pinhole at the origin looks up (+y) at a lamp disk of radius 1 at
+    # height 2 (fov 90°: the film spans [-1, 1]² at unit distance). The ray
+    # through film point (sx, sy) meets the disk iff 4 (sx² + sy²) <= 1, and
+    # then sees its emission 2; otherwise black. The 16-gon misses the rim.
+    def scene(extra):
+        path = tmp_path / f"disk{len(extra)}.json"
+        path.write_text(json.dumps({
+            "camera": {"position": [0, 0, 0], "look_at": [0, 1, 0], "up": [0, 0, 1], "fov": 90, "resolution": [64, 64]},
+            "materials": {"lamp": {"reflectance": [0, 0, 0], "emission": [2, 2, 2]}},
+            "shapes": [dict({"type": "disk", "center": [0, 2, 0], "normal": [0, -1, 0], "radius": 1,
+                             "material": "lamp"}, **extra)]}))
+        return str(path)
+    s = (2 * (np.arange(64) + 0.5) / 64 - 1)
+    r2 = 4 * (s[None, :] ** 2 + s[:, None] ** 2)
+    clear = np.abs(r2 - 1) > 1e-3  # away from the rim, where float rays could round either way
+    exact = stratum.render(scene({}), spp=1, pixel_centers=True, passes=1)[:, :, 0]
+    assert np.array_equal(exact[clear], np.where(r2 <= 1, 2.0, 0.0)[clear])
+    polygon = stratum.render(scene({"segments": 16}), spp=1, pixel_centers=True, passes=1)[:, :, 0]
+    assert np.sum(polygon[clear] != exact[clear]) > 0
