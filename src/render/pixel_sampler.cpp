@@ -2,6 +2,7 @@
 
 #include "stratum/patterns/random.hpp"
 #include "stratum/patterns/strata.hpp"
+#include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
@@ -44,11 +45,13 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;
   if (name == "jittered" && (r.empty() || r == "none")) fast_ = Fast::jittered;
   if (name == "pmj02" && (r.empty() || r == "none")) fast_ = Fast::pmj02;
+  halton_permute_ = name == "halton" && (r.empty() || r == "permute");
   spp_root_ = integer_root(settings_.spp, 2);
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other)
-    : settings_(other.settings_), fast_(other.fast_), spacetime_(other.spacetime_), spp_root_(other.spp_root_) {}
+    : settings_(other.settings_), fast_(other.fast_), halton_permute_(other.halton_permute_),
+      spacetime_(other.spacetime_), spp_root_(other.spp_root_) {}
 
 bool PixelSampler::direct_for(std::uint64_t n) const noexcept {
   if (fast_ == Fast::none) return false;
@@ -95,6 +98,16 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
       const auto p = direct_point(seed, root, i);
       points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
     }
+    return points;
+  }
+  if (sampler == settings_.sampler && d == 2 && halton_permute_) {
+    // The registry's scrambler for these bases and indices, without its
+    // request handling: each point straight from RandomDigitPermutations
+    // (sample() equals the registry's tabulated fill bit for bit).
+    const RandomDigitPermutations permutations(seed, {2, 3}, n - 1);
+    PointSet points{n, d, std::make_unique<double[]>(n * d)};
+    for (std::uint64_t i = 0; i < n; ++i)
+      points.data[2 * i] = permutations.sample(i, 0), points.data[2 * i + 1] = permutations.sample(i, 1);
     return points;
   }
   SamplerRequest request;

@@ -125,6 +125,25 @@ TEST(PixelSampler, FastPathsEqualTheRegistry) {
   }
 }
 
+TEST(PixelSampler, HaltonSetsEqualTheRegistry) {
+  for (const char* randomize : {"", "permute", "owen"}) {
+    PixelSamplerSettings s = settings("halton", 16);
+    s.randomize = randomize;
+    const PixelSampler sampler(s);
+    for (std::uint64_t n : {1ull, 4ull, 16ull, 81ull})
+      for (std::uint64_t seed : {0ull, 12345ull, 0xdeadbeefcafeull}) {
+        const PointSet drawn = sampler.draw_for_test(n, seed);
+        SamplerRequest request;
+        request.n = n;
+        request.d = 2;
+        request.seed = seed;
+        request.randomize = randomize;
+        const PointSet reference = generate_points("halton", request);
+        for (std::size_t i = 0; i < 2 * n; ++i) ASSERT_EQ(drawn.data[i], reference.data[i]) << randomize << " " << n << " " << i;
+      }
+  }
+}
+
 TEST(PixelSampler, OtherSamplersGoThroughTheRegistry) {
   EXPECT_FALSE(PixelSampler(settings("halton", 16)).direct());
   PixelSamplerSettings owen = settings("sobol", 16);

@@ -36,6 +36,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -74,6 +75,17 @@ constexpr u128 digit_weight(std::uint32_t base, unsigned position) noexcept {
   for (unsigned j = 0; j <= position; ++j) power *= base;
   const u128 all_ones = ~u128{0};  // 2^128 − 1
   return all_ones / power + (all_ones % power == power - 1 ? 1 : 0);
+}
+
+/// W_j for every position j < K(b), computed once per base and thread: each
+/// is a 128-bit division, which made up most of a scrambler's construction
+/// when a renderer builds one per pixel and dimension.
+inline const std::vector<u128>& digit_weights(std::uint32_t base) {
+  thread_local std::unordered_map<std::uint32_t, std::vector<u128>> cache;
+  auto [entry, inserted] = cache.try_emplace(base);
+  if (inserted)
+    for (unsigned j = 0; j < digit_count(base); ++j) entry->second.push_back(digit_weight(base, j));
+  return entry->second;
 }
 
 /// Exact n / d by one 64×64→128 multiplication for n < limit() (Lemire,
@@ -233,7 +245,8 @@ class PositionalDigitScrambler {
     std::uint64_t size = 1;
     for (unsigned t = 0; t < d.digits_per_chunk; ++t) size *= base;
     d.divider = FastDivider(size);
-    for (unsigned j = 0; j < d.positions; ++j) weights_.push_back(digit_weight(base, j));
+    const std::vector<u128>& weights = digit_weights(base);
+    weights_.insert(weights_.end(), weights.begin(), weights.end());
     dims_.push_back(d);
 
     // Tabulated entries per chunk: all b^m while the index range spans the

@@ -23,7 +23,8 @@
 /// from the index-addressable core generators (sequences/, patterns/): no
 /// registry call, no allocation, bit-identical to the registry's set (tested).
 /// Other samplers draw each set through the registry once per pixel and
-/// dimension and cache it.
+/// dimension and cache it; halton (permute) builds the same sets with its
+/// scrambler directly, skipping the registry's request handling.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -84,6 +85,7 @@ class PixelSampler {
   PixelSamplerSettings settings_;
   enum class Fast { none, random, sobol_owen_hash, jittered, pmj02 };
   Fast fast_ = Fast::none;  ///< a direct path for the common samplers
+  bool halton_permute_ = false;  ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
   std::string spacetime_;  ///< the space-time sampler, or empty
   std::uint64_t pixel_key_ = 0;
   bool first_pixel_ = true;
