@@ -31,11 +31,15 @@ void run_local(const LocalOptions& o) {
   const sa::PointView view{points.data.get(), points.n, points.d};
   require(view.d == 2, "d", view.d, "the local discrepancy needs 2D points");
   sa::check_unit_cube(view);
-  // --box: the box line on stdout, and the grid only into -o FILE.
+  // --box: the box line on stdout, and the grid only into -o FILE. Through
+  // the registry's star-box, so the CLI and Python share its size limit
+  // (the sweep is O(N^2)) and its message.
   if (o.box) {
-    const sa::StarDiscrepancyBox box = sa::star_discrepancy_box(view);
-    fmt::print("D* = {} at the box [0, {}) x [0, {}): {} points, {}\n", box.value, box.x, box.y, box.count,
-               box.closed ? "too many (upper edges included, approached from above)" : "too few");
+    const sa::MeasureResult box = sa::compute_measure("star-box", view, {});
+    const auto& e = box.extras;
+    fmt::print("D* = {} at the box [0, {}) x [0, {}): {} points, {}\n", box.value, e.at("x"), e.at("y"),
+               static_cast<std::size_t>(e.at("count")),
+               e.at("closed") == 1.0 ? "too many (upper edges included, approached from above)" : "too few");
     if (o.output.empty() || o.output == "-") return;
   }
   const sa::LocalDiscrepancyGrid grid = sa::local_discrepancy_grid(view, static_cast<std::size_t>(o.resolution));
@@ -53,7 +57,7 @@ void add_local_discrepancy_command(CLI::App& app) {
   add_point_input_options(*command, *o);
   command->add_option("-r,--resolution", o->resolution, "R: the grid's corners are (i/R, j/R), i, j = 0..R (1..4096)")
       ->capture_default_str();
-  command->add_flag("--box", o->box, "print the box [0,x) x [0,y) attaining D* (O(N^2)); the grid then goes only to -o FILE");
+  command->add_flag("--box", o->box, "print the box [0,x) x [0,y) attaining D* (O(N^2), N <= 20000); the grid then goes only to -o FILE");
   command->add_option("--format", o->format, "txt|csv|npy")->capture_default_str();
   command->add_option("-o,--output", o->output, "output file: (R+1) rows of R+1 values, row j for y = j/R (stdout when absent)");
   command->callback([o] { run_local(*o); });

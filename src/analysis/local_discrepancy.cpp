@@ -28,6 +28,7 @@ std::size_t cell_of(double v, std::size_t cells) {
 LocalDiscrepancyGrid local_discrepancy_grid(const PointView& points, std::size_t resolution) {
   require(points.d == 2, "d", points.d, "the local discrepancy picture needs 2D points");
   require(resolution >= 1 && resolution <= 4096, "resolution", resolution, "must be in [1, 4096]");
+  require(points.n >= 1, "n", points.n, "needs at least one point");  // n(x, y)/N
   const std::size_t r = resolution, side = r + 1;
   // counts[(b+1)·side + (a+1)] = points in cell (a, b); then 2D prefix sums
   // turn it into the count of [0, i/R) × [0, j/R) at index j·side + i.

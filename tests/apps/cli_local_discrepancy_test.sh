@@ -14,12 +14,13 @@ x = np.random.default_rng(3).random((40, 2)); x[0, 0] = 0.5; x[1, 1] = 0.25
 np.savetxt('$tmp/p.txt', x, fmt='%.17g')"
 "$stratum" local-discrepancy "$tmp/p.txt" -r 8 -o "$tmp/grid.npy" --format npy && ok || fail "grid to npy"
 "$stratum" local-discrepancy "$tmp/p.txt" -r 8 >"$tmp/grid.txt" && ok || fail "grid to stdout"
-$py - "$tmp/p.txt" "$tmp/grid.npy" "$tmp/grid.txt" <<'PY' && ok || fail "grid equals the brute-force count"
+"$stratum" local-discrepancy "$tmp/p.txt" --resolution 8 --format csv -o "$tmp/grid.csv" && ok || fail "grid to csv"
+$py - "$tmp/p.txt" "$tmp/grid.npy" "$tmp/grid.txt" "$tmp/grid.csv" <<'PY' && ok || fail "grid equals the brute-force count"
 import sys, numpy as np
 p = np.loadtxt(sys.argv[1]); n = len(p); r = 8
 want = np.array([[np.sum((p[:, 0] < i / r) & (p[:, 1] < j / r)) / n - (i / r) * (j / r)
                   for i in range(r + 1)] for j in range(r + 1)])
-for got in (np.load(sys.argv[2]), np.loadtxt(sys.argv[3])):
+for got in (np.load(sys.argv[2]), np.loadtxt(sys.argv[3]), np.loadtxt(sys.argv[4], delimiter=",")):
     assert got.shape == (r + 1, r + 1), got.shape
     assert np.max(np.abs(got - want)) < 1e-14, np.max(np.abs(got - want))
 PY
@@ -69,13 +70,23 @@ assert e["holds"] == 5 and 0 < r["value"] <= 1, r
 PY
 
 # Bad input: the argument named, non-zero exit, no file left.
-expect_error "resolution" local-discrepancy "$tmp/p.txt" -r 0 -o "$tmp/bad.npy"
-expect_error "resolution" local-discrepancy "$tmp/p.txt" -r 5000 -o "$tmp/bad.npy"
+expect_error "invalid resolution = 0: must be in \[1, 4096\]" local-discrepancy "$tmp/p.txt" -r 0 -o "$tmp/bad.npy"
+expect_error "invalid resolution = 5000: must be in \[1, 4096\]" local-discrepancy "$tmp/p.txt" -r 5000 -o "$tmp/bad.npy"
+expect_error "resolution = abc" local-discrepancy "$tmp/p.txt" -r abc -o "$tmp/bad.npy"
 expect_error "invalid d = 3" local-discrepancy --sampler halton -n 16 -d 3 -o "$tmp/bad.npy"
 expect_error "format" local-discrepancy "$tmp/p.txt" --format xml -o "$tmp/bad.npy"
 expect_error "input" local-discrepancy -o "$tmp/bad.npy"
 expect_error "output" local-discrepancy "$tmp/p.txt" -o "$tmp/no/such/dir/g.txt"
+printf '# nothing\n' >"$tmp/empty.txt"; printf '0.5 0.5\n' >"$tmp/one.txt"; printf '0.5 0.5\n0.2 -0.1\n' >"$tmp/out.txt"
+expect_error "invalid input = .*empty.txt: holds no points" local-discrepancy "$tmp/empty.txt" -o "$tmp/bad.npy"
+expect_error "invalid n = 1" local-discrepancy "$tmp/one.txt" -o "$tmp/bad.npy"
+expect_error "invalid n = 0" local-discrepancy --sampler halton -n 0 -o "$tmp/bad.npy"
+expect_error "invalid point\[1\]\[1\] = -0.1" local-discrepancy "$tmp/out.txt" -o "$tmp/bad.npy"
+expect_error "invalid d = 1" local-discrepancy --sampler halton -n 16 -d 1 --box -o "$tmp/bad.npy"
+# The box sweep is O(N^2): --box takes at most 20000 points, as the star-box measure does.
+expect_error "invalid n = 20001: .*at most 20000" local-discrepancy --sampler random -n 20001 --box -o "$tmp/bad.npy"
 expect_error "invalid d = 3" discrepancy --sampler halton -n 16 -d 3 -m star-box
 expect_error "param" discrepancy --sampler halton -n 16 -m koksma-hlawka -p x=1
-[ ! -e "$tmp/bad.npy" ] && ok || fail "a failed run left bad.npy"
+# Neither the file nor a temporary beside it.
+[ -z "$(ls -A "$tmp" | grep 'bad')" ] && ok || fail "a failed run left $(ls -A "$tmp" | grep 'bad')"
 finish

@@ -29,8 +29,9 @@ struct LocalDiscrepancyGrid {
 };
 
 /// Δ on an (R+1)×(R+1) grid of corners by binning the points into R×R cells
-/// and summing prefix counts: O(N + R²). Needs d == 2 and 1 ≤ R ≤ 4096;
-/// throws stratum::invalid_argument naming `resolution` otherwise.
+/// and summing prefix counts: O(N + R²). Needs d == 2, N ≥ 1 and
+/// 1 ≤ R ≤ 4096; throws stratum::invalid_argument naming `d`, `n` or
+/// `resolution` otherwise.
 LocalDiscrepancyGrid local_discrepancy_grid(const PointView& points, std::size_t resolution);
 
 /// The box [0,x) × [0,y) of the supremum of |Δ|.
