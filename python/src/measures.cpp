@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "bindings.hpp"
+#include "stratum/analysis/koksma_hlawka.hpp"
 #include "stratum/analysis/l2_discrepancy.hpp"
 #include "stratum/analysis/local_discrepancy.hpp"
 #include "stratum/analysis/measures.hpp"
@@ -94,6 +95,39 @@ py::array_t<double> local_discrepancy(const Array& x, std::int64_t resolution) {
   return out;
 }
 
+py::dict function_dict(const sa::VariationTestFunction& f) {
+  return py::dict(py::arg("function") = f.name, py::arg("formula") = f.formula, py::arg("integral") = f.integral,
+                  py::arg("variation") = f.variation, py::arg("derivation") = f.derivation);
+}
+
+py::list variation_test_functions() {
+  py::list list;
+  for (const auto& f : sa::variation_test_functions()) list.append(function_dict(f));
+  return list;
+}
+
+/// One dict per test function: its description and the check against the
+/// caller's D* (measures.py computes D* from the registry when not given).
+py::list koksma_hlawka(const Array& x, double star) {
+  const sa::PointView view = view_of(x);
+  std::vector<sa::KoksmaHlawkaCheck> checks;
+  {
+    py::gil_scoped_release release;
+    checks = sa::koksma_hlawka_checks(view, star);
+  }
+  const auto& functions = sa::variation_test_functions();  // checks[i] is functions[i]
+  py::list list;
+  for (std::size_t i = 0; i < checks.size(); ++i) {
+    py::dict row = function_dict(functions[i]);
+    row["estimate"] = checks[i].estimate;
+    row["error"] = checks[i].error;
+    row["bound"] = checks[i].bound;
+    row["holds"] = checks[i].holds;
+    list.append(row);
+  }
+  return list;
+}
+
 double update_centered(const Array& x_new, const Array& sample, double initial) {
   const sa::PointView view = view_of(sample);
   if (x_new.ndim() != 1 || static_cast<std::size_t>(x_new.shape(0)) != view.d)
@@ -109,6 +143,8 @@ void bind_measures(py::module_& m) {
   m.def("scipy_discrepancy", &scipy_discrepancy, py::arg("x"), py::arg("method"), py::arg("iterative"),
         py::arg("threads"));
   m.def("local_discrepancy", &local_discrepancy, py::arg("x"), py::arg("resolution"));
+  m.def("variation_test_functions", &variation_test_functions);
+  m.def("koksma_hlawka", &koksma_hlawka, py::arg("x"), py::arg("star"));
   m.def("update_centered_discrepancy", &update_centered, py::arg("x_new"), py::arg("sample"), py::arg("initial"));
 }
 

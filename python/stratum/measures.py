@@ -33,7 +33,8 @@ import numpy as np
 from . import _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["measures", "measure", "discrepancy", "local_discrepancy"]
+__all__ = ["measures", "measure", "discrepancy", "local_discrepancy", "star_discrepancy_box", "koksma_hlawka",
+           "variation_test_functions"]
 
 # scipy.stats.qmc.discrepancy's method names and the registry measure behind each.
 _SCIPY_METHODS = {"CD": "cd", "WD": "wd", "MD": "md", "L2-star": "l2-star"}
@@ -139,9 +140,61 @@ def local_discrepancy(x, resolution: int = 64) -> np.ndarray:
     Returns an array D of shape (R + 1, R + 1) with D[j, i] = n(x, y)/N - x*y at
     x = i/R, y = j/R, where n counts the points in [0, x) x [0, y) (LECTURE.md
     §10). max |D| is a lower bound on the star discrepancy; the box attaining
-    D* itself is ``measure(x, "star-box")``. Raises InvalidArgument for d != 2,
+    D* itself is ``star_discrepancy_box(x)``. Raises InvalidArgument for d != 2,
     R outside [1, 4096] or a point outside [0, 1].
     """
     if isinstance(resolution, (bool, np.bool_)) or not isinstance(resolution, (numbers.Integral, np.integer)):
         raise InvalidArgument(f"invalid resolution = {resolution!r}: must be an integer in [1, 4096]")
     return _stratum.local_discrepancy(_points(x), int(resolution))
+
+
+def star_discrepancy_box(x, threads: int = 1) -> dict:
+    """Where the star discrepancy of 2D points x (n >= 2, at most 20000) is attained.
+
+    Returns {"value": D*, "x": ..., "y": ...: the box [0, x) x [0, y),
+    "closed": bool, "count": int}. closed is True when the box holds too many
+    points, count/N - x*y = D*, with the points on its upper edges counted (the
+    supremum is approached from above); False when it holds too few, x*y -
+    count/N = D*, counting [0, x) x [0, y). The registry measure "star-box"
+    (``stratum discrepancy -m star-box``) underneath; O(N^2) time.
+    """
+    result = measure(x, "star-box", threads)
+    extras = result["extras"]
+    return {"value": result["value"], "x": extras["x"], "y": extras["y"], "closed": extras["closed"] == 1.0,
+            "count": int(extras["count"])}
+
+
+def variation_test_functions() -> list[dict]:
+    """The 2D test functions of the Koksma-Hlawka check: function (name),
+    formula, integral (exact, over [0, 1]^2), variation (Hardy-Krause,
+    anchored at 1, closed form) and derivation (how the variation follows)."""
+    return _stratum.variation_test_functions()
+
+
+def koksma_hlawka(x, star_discrepancy: float | None = None, threads: int = 1) -> list[dict]:
+    """The Koksma-Hlawka inequality |mean f(x_i) - integral f| <= V_HK(f) * D*
+    (Niederreiter 1992, Thm. 2.11) checked on 2D points x for every test
+    function of ``variation_test_functions()``.
+
+    star_discrepancy: D* of x, or an upper bound on it; None computes it with
+    the registry's "star" measure (exact for n <= 2^18, else Thiemard's upper
+    bound, which keeps the inequality true).
+    Returns one dict per function: the keys of ``variation_test_functions()``
+    and estimate (mean f(x_i)), error (|estimate - integral|), bound
+    (variation * D*), holds (error <= bound, up to 1e-12 of rounding), star
+    (the D* used) and star_kind ("exact", "upper bound" or "given").
+    """
+    points = _points(x)
+    if points.shape[1] != 2:
+        raise InvalidArgument(f"invalid d = {points.shape[1]}: the Koksma-Hlawka test functions are 2D")
+    if star_discrepancy is None:
+        result = measure(points, "star", threads)
+        star, kind = (result["value"], "exact") if result["kind"] == "exact" else (result["upper"], "upper bound")
+    else:
+        if isinstance(star_discrepancy, (bool, np.bool_)) or not isinstance(star_discrepancy, (numbers.Real, np.floating)):
+            raise InvalidArgument(f"invalid star_discrepancy = {star_discrepancy!r}: must be a number in [0, 1]")
+        star, kind = float(star_discrepancy), "given"
+    rows = _stratum.koksma_hlawka(points, star)
+    for row in rows:
+        row["star"], row["star_kind"] = star, kind
+    return rows
