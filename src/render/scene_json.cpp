@@ -2,6 +2,8 @@
 /// Every message names the file and where in it the problem is.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -165,8 +167,12 @@ Shape read_shape(const json& value, const std::string& where, const std::map<std
       shape.indices.push_back({tri[0].get<unsigned>(), tri[1].get<unsigned>(), tri[2].get<unsigned>()});
     }
   } else if (type == "disk") {
-    const Vec3 normal = r.vec3("normal");
-    require(length(normal) > 0, r.name("normal"), r.at("normal").dump(), "must be a non-zero vector");
+    // Divided by its largest component before normalizing, so that a huge or
+    // tiny (but non-zero) normal neither overflows nor underflows to zero.
+    const Vec3 given = r.vec3("normal");
+    const double scale = std::max({std::abs(given.x), std::abs(given.y), std::abs(given.z)});
+    require(scale > 0, r.name("normal"), r.at("normal").dump(), "must be a non-zero vector");
+    const Vec3 normal = given / scale;
     const double radius = r.number("radius");
     require(radius > 0, r.name("radius"), radius, "must be > 0");
     if (r.has("segments")) {  // the inscribed polygon, on request
