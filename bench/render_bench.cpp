@@ -11,8 +11,9 @@
 // the bare scene's build is untimed), which matters for the third argument's
 // scene 1, the Cornell box with a 131k-triangle sphere mesh.
 // The second argument picks the pixel sampler: random, sobol, jittered and
-// pmj02 take the PixelSampler's direct paths, halton the registry per
-// (pixel, dimension).
+// pmj02 take the PixelSampler's direct paths, halton (permute) its
+// table-free path (the permutations a set needs, built per pixel and
+// dimension and per shadow-ray array; the same points as the registry).
 //
 // Not in bench/*_bench.cpp (the glob of stratum_bench) because stratum_bench
 // does not link stratum_render and Embree; see /work/helpers/notes/render.md.

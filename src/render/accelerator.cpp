@@ -102,13 +102,14 @@ double scene_extent(const Scene& scene) {
 }
 
 RTCRay to_embree(const Ray& ray, double t_near) {
-  RTCRay r{};
+  RTCRay r;  // every field set below
   r.org_x = float(ray.origin.x), r.org_y = float(ray.origin.y), r.org_z = float(ray.origin.z);
   r.dir_x = float(ray.direction.x), r.dir_y = float(ray.direction.y), r.dir_z = float(ray.direction.z);
   r.tnear = float(t_near);
   r.tfar = ray.t_max >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(ray.t_max);
   r.time = float(ray.time);
   r.mask = ~0u;
+  r.id = 0;
   r.flags = 0;
   return r;
 }
@@ -149,7 +150,7 @@ Accelerator::~Accelerator() = default;
 std::optional<Hit> Accelerator::intersect(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit query{};
+  RTCRayHit query;  // Embree reads the ray and these two hit fields, and writes the rest
   query.ray = to_embree(ray, epsilon_);
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;

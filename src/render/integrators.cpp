@@ -19,20 +19,24 @@ constexpr double pi = std::numbers::pi;
 bool is_black(Vec3 c) { return c.x <= 0 && c.y <= 0 && c.z <= 0; }
 
 /// Per-shading-point scratch (2D samples, candidate shadow rays): on the
-/// stack for up to 16 (the usual case; no allocation per eye ray), on the
-/// heap beyond.
+/// stack for up to 16 (the usual case; no allocation per eye ray, and no
+/// initialization: every element is written before it is read), on the heap beyond.
 template <class T>
 class Buffer {
  public:
   explicit Buffer(std::uint32_t n) {
-    if (n > local_.size()) heap_.resize(n);
+    if (n > local_size) heap_ = std::make_unique<T[]>(n), data_ = heap_.get();
   }
-  T* data() { return heap_.empty() ? local_.data() : heap_.data(); }
-  T& operator[](std::size_t i) { return data()[i]; }
+  T* data() { return data_; }
+  T& operator[](std::size_t i) { return data_[i]; }
 
  private:
-  std::array<T, 16> local_;
-  std::vector<T> heap_;
+  static constexpr std::size_t local_size = 16;
+  union {
+    T local_[local_size];  // not initialized
+  };
+  std::unique_ptr<T[]> heap_;
+  T* data_ = local_;
 };
 using SampleBuffer = Buffer<std::array<double, 2>>;
 
@@ -75,11 +79,20 @@ struct Integrator::Prepared {
   bool cosine = settings.hemisphere == "cosine";
   Vec3 environment;                    ///< the sum of the environment lights' radiance
   std::vector<LightGeometry> geometry;  ///< by light
+  /// By light, how sample_lights takes it: skipped (found by BSDF sampling
+  /// instead), a quad by area (inline), or through sample_light.
+  enum class Take : std::uint8_t { skip, quad_by_area, general };
+  std::vector<Take> take;
 
   Prepared(const Scene& s, const Accelerator& a, const RenderSettings& r) : scene(s), accelerator(a), settings(r) {
     for (const Light& light : scene.lights) {
       if (light.type == LightType::environment) environment += light.radiance;
       geometry.push_back(light_geometry(scene, light));
+      const bool quad_by_area =
+          geometry.back().quad && strategy.light == LightStrategy::area && light.type == LightType::area;
+      take.push_back(!strategy.sample_lights && light.type != LightType::point ? Take::skip
+                     : quad_by_area                                            ? Take::quad_by_area
+                                                                               : Take::general);
     }
   }
 };
@@ -126,22 +139,28 @@ struct Context {
     sampler.get_2d_array(m, u.data());
     const auto offset = static_cast<std::size_t>(sampler.get_1d() * double(lights));
     const Vec3 n = bsdf.normal();
+    // A diffuse BSDF is the constant ρ/π above the surface: evaluated once
+    // (eval(n) returns exactly what eval(wi) does for any wi above).
+    const bool diffuse = !bsdf.glossy();
+    const Vec3 f_diffuse = diffuse ? bsdf.eval(n) : Vec3{};
     // Two phases: the M samples first (independent arithmetic that the CPU
     // overlaps), then their shadow rays; the sum keeps the order of i.
     Buffer<ShadowRay> rays(m);
     std::uint32_t count = 0;
-    for (std::uint32_t i = 0; i < m; ++i) {
-      const std::size_t index = (i + offset) % lights;
+    std::size_t index = offset % lights;  // (i + offset) mod lights, without a division per sample
+    for (std::uint32_t i = 0; i < m; ++i, index = index + 1 == lights ? 0 : index + 1) {
+      const auto take = prepared.take[index];
+      if (take == Integrator::Prepared::Take::skip) continue;  // found by BSDF sampling instead
       const Light& light = scene.lights[index];
-      if (!strategy.sample_lights && light.type != LightType::point) continue;  // found by BSDF sampling instead
       const LightGeometry& geometry = prepared.geometry[index];
-      const auto s = geometry.quad && strategy.light == LightStrategy::area && light.type == LightType::area
+      const auto s = take == Integrator::Prepared::Take::quad_by_area
                          ? sample_quad_by_area(scene.shapes[light.shape], geometry, x, time, u[i])
                          : sample_light(scene, light, geometry, x, n, time, u[i], strategy.light);
       if (!s) continue;
       const double cos_x = dot(n, s->wi);
-      const Vec3 f = bsdf.eval(s->wi);
-      if (cos_x <= 0 || is_black(f)) continue;
+      if (cos_x <= 0) continue;
+      const Vec3 f = diffuse ? f_diffuse : bsdf.eval(s->wi);
+      if (is_black(f)) continue;
       double w = 1;
       if (!s->delta && bsdf_samples > 0) w = mis_weight(m, s->pdf / double(lights), bsdf_samples, bsdf.pdf(s->wi));
       rays[count++] = {s->wi, s->distance, (w * cos_x / s->pdf) * (f * s->radiance)};

@@ -7,22 +7,30 @@
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/util/real.hpp"
 
 namespace stratum::render {
 
-namespace {
-constexpr std::uint64_t tag_pixel = 0x5049'5845'4cULL;  // random-stream tags
-constexpr std::uint64_t tag_array = 0x4152'5241'59ULL;
-constexpr std::uint64_t tag_time = 0x5449'4d45ULL;
-/// The key Jittered (patterns/jittered.hpp) derives from its seed.
-constexpr std::uint64_t tag_jittered = 0x4a49545445524544ULL;
-
-/// Sobol' (0,2)-sequence tables, shared by every pixel sampler.
-const Sobol& sobol_2d() {
+const Sobol& PixelSampler::sobol_2d() {
   static const Sobol sobol(2);
   return sobol;
 }
+
+namespace {
+constexpr std::uint64_t tag_pixel = 0x5049'5845'4cULL;  // random-stream tags
+constexpr std::uint64_t tag_time = 0x5449'4d45ULL;
+
 }  // namespace
+
+std::uint64_t PixelSampler::set_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
+                                              std::uint32_t dimension) noexcept {
+  return hash64(hash64(seed, tag_pixel, x, y), dimension);
+}
+
+std::uint64_t PixelSampler::array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
+                                                std::uint32_t dimension, std::uint32_t index) noexcept {
+  return hash64(hash64(seed, tag_pixel, x, y), tag_array, dimension, index);
+}
 
 PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(settings)) {
   require(settings_.spp >= 1, "spp", settings_.spp, "must be a positive integer");
@@ -46,45 +54,76 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   if (name == "jittered" && (r.empty() || r == "none")) fast_ = Fast::jittered;
   if (name == "pmj02" && (r.empty() || r == "none")) fast_ = Fast::pmj02;
   halton_permute_ = name == "halton" && (r.empty() || r == "permute");
+  has_spacetime_ = !spacetime_.empty();
+  if (fast_ == Fast::sobol_owen_hash) sobol_ = &sobol_2d();
+  halton_direct_ = halton_permute_ && settings_.spp <= halton_direct_max;
+  if (halton_permute_)
+    for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
 }
 
-PixelSampler::PixelSampler(const PixelSampler& other)
-    : settings_(other.settings_), fast_(other.fast_), halton_permute_(other.halton_permute_),
-      spacetime_(other.spacetime_), spp_root_(other.spp_root_) {}
+PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
+  // The validated choices and per-render constants; the caches start empty.
+  fast_ = other.fast_, sobol_ = other.sobol_, halton_permute_ = other.halton_permute_;
+  halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
+  halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
+  has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
+}
+
+void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set,
+                                    unsigned coordinates) const noexcept {
+  using u128 = unsigned __int128;
+  // K(b) and m(b) of digits.hpp for bases 2 and 3, as constants.
+  static constexpr unsigned positions_of[2] = {digits_detail::digit_count(2), digits_detail::digit_count(3)};
+  static constexpr unsigned chunk_of[2] = {digits_detail::chunk_digits(2), digits_detail::chunk_digits(3)};
+  const digits_detail::ShuffledPermutationRule rule(seed);  // RandomDigitPermutations' permutations
+  for (unsigned c = 0; c < coordinates; ++c) {
+    const std::uint32_t base = c + 2;
+    const unsigned positions = positions_of[c], chunk = chunk_of[c];
+    const u128* weight = halton_weights_[c].data();
+    unsigned used = 0;  // positions where some index < n has a non-zero digit (≤ chunk, as n ≤ base^chunk)
+    for (std::uint64_t r = n - 1; r != 0; r /= base) ++used;
+    std::uint32_t images[3];
+    for (unsigned j = 0; j < used; ++j) {
+      rule.permutation(c, j, base, images);
+      for (std::uint32_t a = 0; a < base; ++a) set.low[c][j][a] = std::uint64_t{images[a]} * weight[j];
+    }
+    // Past the used positions every index has digit 0: π_j(0)·W_j, summed in
+    // 128 bits per chunk (the rest of the first chunk kept whole, each later
+    // chunk truncated to its top 64 bits, as digits.hpp's tables do).
+    u128 first_rest = 0, sum = 0;
+    std::uint64_t tail = 0;
+    unsigned j = used;
+    for (; j < chunk; ++j) first_rest += std::uint64_t{rule.image(c, j, base, 0)} * weight[j];
+    for (unsigned in_chunk = 0; j < positions; ++j) {
+      sum += std::uint64_t{rule.image(c, j, base, 0)} * weight[j];
+      if (++in_chunk == chunk || j + 1 == positions) tail += static_cast<std::uint64_t>(sum >> 64), sum = 0, in_chunk = 0;
+    }
+    set.first_chunk_rest[c] = first_rest;
+    set.tail[c] = tail;
+    set.positions[c] = used;
+  }
+  set.coordinates = coordinates;
+}
+
+std::array<double, 2> PixelSampler::halton_point(const HaltonSet& set, std::uint64_t index) noexcept {
+  std::array<double, 2> point{0.0, 0.0};
+  for (unsigned c = 0; c < set.coordinates; ++c) {
+    const std::uint32_t base = c == 0 ? 2 : 3;
+    unsigned __int128 sum = set.first_chunk_rest[c];
+    std::uint64_t rest = index;
+    for (unsigned j = 0; j < set.positions[c]; ++j) sum += set.low[c][j][rest % base], rest /= base;
+    const std::uint64_t fraction = static_cast<std::uint64_t>(sum >> 64) + set.tail[c];
+    point[c] = to_unit<double>(digits_detail::fraction_to_double(fraction));
+  }
+  return point;
+}
 
 bool PixelSampler::direct_for(std::uint64_t n) const noexcept {
   if (fast_ == Fast::none) return false;
   if (fast_ != Fast::jittered) return true;
   const std::uint64_t k = integer_root(n, 2);
   return k * k == n;  // otherwise the registry names the bad count
-}
-
-std::array<double, 2> PixelSampler::direct_point(std::uint64_t seed, std::uint64_t root,
-                                                 std::uint64_t index) const noexcept {
-  switch (fast_) {
-    case Fast::random: {
-      const RandomPattern random(seed);
-      return {random.sample(index, 0), random.sample(index, 1)};
-    }
-    case Fast::sobol_owen_hash: {
-      const HashOwenScrambler owen(seed);
-      return {sobol_2d().sample(index, 0, owen), sobol_2d().sample(index, 1, owen)};
-    }
-    case Fast::jittered: {
-      // Jittered(StrataShape::equal(n, 2), seed).sample(index, ·) without the
-      // shape's vectors: cell (index mod k, index div k) of the k × k grid.
-      const std::uint64_t k = root, key = hash64(seed, tag_jittered);
-      return {cell_coordinate<double>(index % k, uniform01<double>(key, index, 0u), k),
-              cell_coordinate<double>((index / k) % k, uniform01<double>(key, index, 1u), k)};
-    }
-    case Fast::pmj02: {
-      const Pmj02 pmj(2, seed);
-      return {pmj.sample(index, 0), pmj.sample(index, 1)};
-    }
-    case Fast::none: break;
-  }
-  return {0, 0};
 }
 
 PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed) const {
@@ -96,6 +135,16 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
     const std::uint64_t root = integer_root(n, 2);
     for (std::uint64_t i = 0; i < n; ++i) {
       const auto p = direct_point(seed, root, i);
+      points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
+    }
+    return points;
+  }
+  if (sampler == settings_.sampler && d == 2 && halton_permute_ && n <= halton_direct_max) {
+    HaltonSet set;
+    build_halton_set(seed, n, set);
+    PointSet points{n, d, std::make_unique<double[]>(n * d)};
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const auto p = halton_point(set, i);
       points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
     }
     return points;
@@ -119,14 +168,18 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
 }
 
 void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uint32_t index) {
-  const std::uint64_t key = hash64(settings_.seed, tag_pixel, x, y);
-  if (key != pixel_key_ || first_pixel_) {
-    pixel_key_ = key;
+  if (first_pixel_ || x != pixel_x_ || y != pixel_y_) {
+    const std::uint64_t key = hash64(settings_.seed, tag_pixel, x, y);
+    pixel_key_ = key, pixel_x_ = x, pixel_y_ = y;
     first_pixel_ = false;
+    pixel_mix_ = mixed(key);
+    array_mix_ = mixed(link(pixel_mix_, tag_array));
+    dimension_valid_ = array_valid_ = 0;
     for (auto& set : sets_) set.n = 0;  // stale: redrawn on first use
+    for (auto& set : halton_sets_) set.coordinates = 0;
     if (!spacetime_.empty()) spacetime_set_ = draw(spacetime_, settings_.spp, 3, hash64(key, tag_time));
   }
-  index_ = index % settings_.spp;
+  index_ = index < settings_.spp ? index : index % settings_.spp;  // no division in the usual case
   dimension_ = 0;
 }
 
@@ -137,30 +190,23 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   return set;
 }
 
-std::array<double, 2> PixelSampler::get_pixel_2d() {
-  if (!spacetime_.empty()) return {spacetime_set_(index_, 0), spacetime_set_(index_, 1)};
-  return get_2d();
-}
-
-double PixelSampler::get_time() {
-  if (!spacetime_.empty()) return spacetime_set_(index_, 2);
-  return get_1d();
-}
-
-std::array<double, 2> PixelSampler::get_2d() {
-  const std::uint32_t dimension = dimension_++;
-  if (fast_ != Fast::none) return direct_point(hash64(pixel_key_, dimension), spp_root_, index_);
-  const PointSet& set = set_for(dimension);
+std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
+  if (halton_direct_) {
+    const std::uint32_t dimension = dimension_++;
+    if (halton_sets_.size() <= dimension) halton_sets_.resize(dimension + 1);
+    HaltonSet& set = halton_sets_[dimension];
+    if (set.coordinates < coordinates) build_halton_set(hash64(pixel_key_, dimension), settings_.spp, set, coordinates);
+    return halton_point(set, index_);
+  }
+  const PointSet& set = set_for(dimension_++);
   return {set(index_, 0), set(index_, 1)};
 }
 
-double PixelSampler::get_1d() { return get_2d()[0]; }
-
-void PixelSampler::get_2d_array(std::uint32_t n, std::array<double, 2>* out) {
-  const std::uint64_t seed = hash64(pixel_key_, tag_array, dimension_++, index_);
-  if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
-  if (fast_ != Fast::none && (fast_ != Fast::jittered || array_root_ * array_root_ == n)) {
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = direct_point(seed, array_root_, i);
+void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t n, std::array<double, 2>* out) {
+  if (halton_permute_ && n <= halton_direct_max) {
+    HaltonSet set;
+    build_halton_set(seed, n, set);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(set, i);
     return;
   }
   const PointSet set = draw(settings_.sampler, n, 2, seed);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "stratum/render/accelerator.hpp"
 #include "stratum/render/camera_model.hpp"
@@ -47,7 +48,10 @@ Image render(const Scene& scene, const RenderSettings& settings,
   const Integrator integrator(scene, accelerator, settings);
   const int width = camera.width(), height = camera.height();
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
-  std::vector<double> sum(3 * pixels, 0.0), sum2(3 * pixels, 0.0);
+  // Per pixel and channel: Σ L and Σ L² over the samples taken (written by
+  // pass 0, which visits every pixel, so not initialized here).
+  const auto sum = std::make_unique_for_overwrite<double[]>(3 * pixels);
+  const auto sum2 = std::make_unique_for_overwrite<double[]>(3 * pixels);
 
   const std::uint32_t spp = settings.sampler.spp;
   const std::uint32_t passes = std::clamp<std::uint32_t>(settings.passes, 1, spp);
@@ -63,6 +67,11 @@ Image render(const Scene& scene, const RenderSettings& settings,
       for (int y = y0; y < std::min(y0 + tile, height); ++y)
         for (int x = x0; x < std::min(x0 + tile, width); ++x) {
           const std::size_t p = 3 * (std::size_t(y) * width + x);
+          // The pixel's sums in registers, added to in the same order as
+          // sample by sample into memory (the same bits), stored once.
+          double s[3] = {0, 0, 0}, s2[3] = {0, 0, 0};
+          if (pass > 0)
+            for (int c = 0; c < 3; ++c) s[c] = sum[p + c], s2[c] = sum2[p + c];
           for (std::uint32_t index = first; index < last; ++index) {
             sampler.start_pixel_sample(std::uint32_t(x), std::uint32_t(y), index);
             const auto film = settings.pixel_centers ? std::array{0.5, 0.5} : sampler.get_pixel_2d();
@@ -72,10 +81,11 @@ Image render(const Scene& scene, const RenderSettings& settings,
             const Vec3 l = integrator.radiance(ray, sampler);
             for (int c = 0; c < 3; ++c) {
               const double v = std::isfinite(l[c]) ? l[c] : 0.0;  // a NaN path counts as black
-              sum[p + c] += v;
-              sum2[p + c] += v * v;
+              s[c] += v;
+              s2[c] += v * v;
             }
           }
+          for (int c = 0; c < 3; ++c) sum[p + c] = s[c], sum2[p + c] = s2[c];
         }
     });
     taken = last;

@@ -125,12 +125,53 @@ TEST(PixelSampler, FastPathsEqualTheRegistry) {
   }
 }
 
+TEST(PixelSampler, PixelDrawsArePointsOfTheRegistrySetsOfTheirSeeds) {
+  // What a pixel sample draws (1D, 2D and an array, pixels revisited after
+  // others, so that the per-pixel caches of the hash chain and of halton's
+  // permutations are exercised) is point `index` of the registry's set for
+  // the seed hashed from (seed, pixel, dimension[, index]) with plain hash64.
+  const auto registry_set = [](const char* name, std::uint64_t n, std::uint64_t seed) {
+    SamplerRequest request;
+    request.n = n;
+    request.d = 2;
+    request.seed = seed;
+    return generate_points(name, request);
+  };
+  for (const char* name : {"random", "sobol", "jittered", "pmj02", "halton"}) {
+    PixelSampler sampler(settings(name, 16));
+    for (auto [x, y] : {std::pair{0u, 0u}, {5u, 3u}, {5u, 4u}, {0u, 0u}})
+      for (std::uint32_t index : {0u, 3u, 15u, 7u}) {
+        sampler.start_pixel_sample(x, y, index);
+        const double t = sampler.get_1d();
+        const auto p = sampler.get_2d();
+        std::array<double, 2> array[9];
+        sampler.get_2d_array(9, array);
+        const auto q = sampler.get_pixel_2d();
+        const PointSet s0 = registry_set(name, 16, PixelSampler::set_seed_for_test(7, x, y, 0));
+        const PointSet s1 = registry_set(name, 16, PixelSampler::set_seed_for_test(7, x, y, 1));
+        const PointSet s2 = registry_set(name, 9, PixelSampler::array_seed_for_test(7, x, y, 2, index));
+        const PointSet s3 = registry_set(name, 16, PixelSampler::set_seed_for_test(7, x, y, 3));
+        ASSERT_EQ(t, s0(index, 0)) << name;
+        ASSERT_EQ(p[0], s1(index, 0)) << name;
+        ASSERT_EQ(p[1], s1(index, 1)) << name;
+        for (std::size_t i = 0; i < 9; ++i) {
+          ASSERT_EQ(array[i][0], s2(i, 0)) << name << " " << i;
+          ASSERT_EQ(array[i][1], s2(i, 1)) << name << " " << i;
+        }
+        ASSERT_EQ(q[0], s3(index, 0)) << name;
+        ASSERT_EQ(q[1], s3(index, 1)) << name;
+      }
+  }
+}
+
 TEST(PixelSampler, HaltonSetsEqualTheRegistry) {
   for (const char* randomize : {"", "permute", "owen"}) {
     PixelSamplerSettings s = settings("halton", 16);
     s.randomize = randomize;
     const PixelSampler sampler(s);
-    for (std::uint64_t n : {1ull, 4ull, 16ull, 81ull})
+    // Up to 2187 = 3^7 the default permute builds only what the points need
+    // (every index in the first digit chunk of both bases); above, RandomDigitPermutations.
+    for (std::uint64_t n : {1ull, 2ull, 3ull, 4ull, 16ull, 81ull, 100ull, 2048ull, 2187ull, 2188ull})
       for (std::uint64_t seed : {0ull, 12345ull, 0xdeadbeefcafeull}) {
         const PointSet drawn = sampler.draw_for_test(n, seed);
         SamplerRequest request;

@@ -48,7 +48,9 @@ void expect_unbiased_mse(const nlohmann::json& comparison, const std::string& la
   const auto& row = comparison["rows"][label];
   const double image_variance = row["sample_variance"].get<double>() / row["spp"].get<double>();
   const double mse = row["mse"].get<double>();
-  if (!stratified) EXPECT_GT(mse, 0.5 * image_variance) << label;
+  if (!stratified) {
+    EXPECT_GT(mse, 0.5 * image_variance) << label;
+  }
   EXPECT_LT(mse, 2 * (image_variance + comparison["reference_variance"].get<double>())) << label;
   EXPECT_NEAR(row["efficiency"].get<double>() * mse * row["seconds"].get<double>(), 1.0, 1e-9) << label;
 }

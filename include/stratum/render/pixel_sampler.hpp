@@ -22,15 +22,25 @@
 /// default randomizers) a draw computes point `index` of the set straight
 /// from the index-addressable core generators (sequences/, patterns/): no
 /// registry call, no allocation, bit-identical to the registry's set (tested).
-/// Other samplers draw each set through the registry once per pixel and
-/// dimension and cache it; halton (permute) builds the same sets with its
-/// scrambler directly, skipping the registry's request handling.
+/// The seed hashing a pixel's draws share (pixel key, per-dimension seeds,
+/// the array seeds' prefix) is done once per pixel. halton (its default
+/// permute) builds, per pixel and dimension and per shadow-ray array, only
+/// the digit permutations its points use, without tables or allocation
+/// (bit-identical to the registry's RandomDigitPermutations; spp and array
+/// counts ≤ 2187, above which it builds RandomDigitPermutations). Other
+/// samplers draw each set through the registry once per pixel and dimension
+/// and cache it.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "stratum/patterns/strata.hpp"
+#include "stratum/randomizers/base2.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/sequences/pmj.hpp"
+#include "stratum/sequences/sobol.hpp"
+#include "stratum/util/hash.hpp"
 
 namespace stratum::render {
 
@@ -54,18 +64,53 @@ class PixelSampler {
   PixelSampler& operator=(const PixelSampler&) = delete;
 
   void start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uint32_t index);
-  double get_1d();
-  std::array<double, 2> get_2d();
+  // The draws: the direct paths inline (a few per camera ray, where a call
+  // and a switch cost as much as the hashing), the others out of line.
+  double get_1d() {
+    if (fast_ != Fast::none) return keyed_point<1>(dimension_key(dimension_++), spp_root_, index_)[0];
+    return get_2d_slow(1)[0];
+  }
+  std::array<double, 2> get_2d() {
+    if (fast_ != Fast::none) return keyed_point<2>(dimension_key(dimension_++), spp_root_, index_);
+    return get_2d_slow();
+  }
   /// The film position within the pixel, in [0,1)².
-  std::array<double, 2> get_pixel_2d();
+  std::array<double, 2> get_pixel_2d() {
+    if (!has_spacetime_) return get_2d();
+    return {spacetime_set_(index_, 0), spacetime_set_(index_, 1)};
+  }
   /// The shutter fraction in [0,1).
-  double get_time();
+  double get_time() {
+    if (!has_spacetime_) return get_1d();
+    return spacetime_set_(index_, 2);
+  }
   /// n points stratified among themselves (n must be a count the sampler takes).
-  void get_2d_array(std::uint32_t n, std::array<double, 2>* out);
+  void get_2d_array(std::uint32_t n, std::array<double, 2>* out) {
+    // seed = hash64(pixel_key_, tag_array, dimension, index_)
+    const std::uint64_t seed = mixed(link(array_prefix(dimension_++), index_));
+    if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
+    switch (fast_) {
+      case Fast::random: return keyed_points<Fast::random>(set_key(seed), array_root_, n, out);
+      case Fast::sobol_owen_hash: return keyed_points<Fast::sobol_owen_hash>(set_key(seed), array_root_, n, out);
+      case Fast::jittered:
+        if (array_root_ * array_root_ != n) break;  // the registry names the bad count
+        return keyed_points<Fast::jittered>(set_key(seed), array_root_, n, out);
+      case Fast::pmj02: return keyed_points<Fast::pmj02>(set_key(seed), array_root_, n, out);
+      case Fast::none: break;
+    }
+    get_2d_array_slow(seed, n, out);
+  }
 
   /// Point set `dimension` of a pixel, as drawn (for tests): the registry's
   /// points for seed hash(pixel key, dimension).
   PointSet draw_for_test(std::uint64_t n, std::uint64_t seed) const { return draw(settings_.sampler, n, 2, seed); }
+  /// The seed of a pixel's set (for tests; plain hash64, independent of the
+  /// cached hash chain the draws use): get_2d/get_1d set `dimension` of pixel
+  /// (x, y) for the settings' seed, and the get_2d_array set of its sample `index`.
+  static std::uint64_t set_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
+                                         std::uint32_t dimension) noexcept;
+  static std::uint64_t array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
+                                           std::uint32_t dimension, std::uint32_t index) noexcept;
   /// Whether draws take the direct path (see above).
   bool direct() const noexcept { return fast_ != Fast::none; }
 
@@ -75,20 +120,157 @@ class PixelSampler {
  private:
   const PointSet& set_for(std::uint32_t dimension);
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed) const;
+  /// get_2d off the direct paths; `coordinates` 1: only the first is used.
+  std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
+  void get_2d_array_slow(std::uint64_t seed, std::uint32_t n, std::array<double, 2>* out);
+
+  /// halton (permute) without RandomDigitPermutations' tables: what point i < n
+  /// of the set RandomDigitPermutations(seed, {2, 3}, n − 1) needs, for
+  /// n ≤ halton_direct_max (indices whose digits all lie in the first chunk
+  /// of both bases, 3^7 = 2187): per coordinate, π_j(a)·W_j for the positions
+  /// j < positions that indices < n use, the 128-bit sum of the rest of the
+  /// first chunk (digits 0) and the truncated sums of the later chunks.
+  /// Built without allocation from the same permutation rule (bit-identical;
+  /// tested against the registry).
+  static constexpr std::uint64_t halton_direct_max = 2187;
+  struct HaltonSet {
+    std::array<std::array<std::array<unsigned __int128, 3>, 12>, 2> low;  ///< [coordinate][position < 12][digit]
+    std::array<unsigned __int128, 2> first_chunk_rest{};
+    std::array<std::uint64_t, 2> tail{};
+    std::array<unsigned, 2> positions{};
+    unsigned coordinates = 0;  ///< how many coordinates are built (0: none, stale)
+  };
+  void build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set, unsigned coordinates = 2) const noexcept;
+  /// Point `index` of a built set (its first `set.coordinates` coordinates; the others 0).
+  static std::array<double, 2> halton_point(const HaltonSet& set, std::uint64_t index) noexcept;
+  bool halton_direct_ = false;  ///< halton_permute_ and spp ≤ halton_direct_max
+  std::vector<HaltonSet> halton_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
+  std::vector<unsigned __int128> halton_weights_[2];  ///< W_j of bases 2 and 3 (digits.hpp)
+
+  // hash64's chain (util/hash.hpp), spelled out so that the parts many draws
+  // share are computed once: hash64(s, c₁, …, c_k) = mix64(t_k + golden)
+  // with t₀ = s, t_j = mix64(t_{j−1} + golden) ^ counter(c_j). A pixel's key,
+  // a dimension's seed, the array seed's (tag, dimension) prefix and a set's
+  // key are each mixed once per pixel (or per set) instead of once per draw.
+  // Bit-identical to hash64 (the direct paths are tested against the registry).
+  static constexpr std::uint64_t golden = 0x9e3779b97f4a7c15ULL;
+  static constexpr std::uint64_t counter(std::uint64_t c) noexcept {
+    return c * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL;
+  }
+  /// One link of the chain, t_j, from the previous link's mix m = mixed(t_{j−1}).
+  static constexpr std::uint64_t link(std::uint64_t m, std::uint64_t c) noexcept { return m ^ counter(c); }
+  static constexpr std::uint64_t mixed(std::uint64_t t) noexcept { return mix64(t + golden); }
+  /// uniform01(seed, index, 0) and (if coordinates == 2) uniform01(seed, index, 1), from m = mixed(seed).
+  template <int coordinates>
+  static std::array<double, 2> uniform_pair(std::uint64_t m, std::uint64_t index) noexcept {
+    const std::uint64_t t = mixed(link(m, index));
+    const double x = bits_to_double(mixed(link(t, 0)));
+    if constexpr (coordinates == 1) return {x, 0.0};
+    else return {x, bits_to_double(mixed(link(t, 1)))};
+  }
+  /// Sobol' (0,2)-sequence tables, shared by every pixel sampler.
+  static const Sobol& sobol_2d();
+
+  enum class Fast { none, random, sobol_owen_hash, jittered, pmj02 };
+  /// The key Jittered (patterns/jittered.hpp) derives from its seed.
+  static constexpr std::uint64_t tag_jittered = 0x4a49545445524544ULL;
+  static constexpr std::uint64_t tag_array = 0x4152'5241'59ULL;  ///< get_2d_array's random-stream tag
+
+  /// The part of a direct path's points that depends on the set's seed alone.
+  struct SetKey {
+    std::uint64_t a = 0, b = 0;
+  };
+  SetKey set_key(std::uint64_t seed) const noexcept {
+    if (fast_ == Fast::random) return {mixed(seed)};                           // RandomPattern: uniform01(seed, ·, ·)
+    if (fast_ == Fast::jittered) return {mixed(hash64(seed, tag_jittered))};  // Jittered: uniform01(key, ·, ·)
+    if (fast_ == Fast::sobol_owen_hash) {  // HashOwenScrambler(seed)'s scramblers of dimensions 0 and 1
+      const std::uint64_t base = hash64(seed, 0x6f68617368ULL /* "ohash" */);
+      return {base2_detail::dimension_key(base, 0), base2_detail::dimension_key(base, 1)};
+    }
+    return {seed};
+  }
   /// Point `index` of the n-point 2D set that draw(settings_.sampler, n, 2,
-  /// seed) returns, computed alone (direct paths only; jittered needs n = k²
-  /// and takes k = root, computed once per count rather than per point).
-  std::array<double, 2> direct_point(std::uint64_t seed, std::uint64_t root, std::uint64_t index) const noexcept;
+  /// seed) returns, computed alone from key = set_key(seed) (direct paths
+  /// only; jittered needs n = k² and takes k = root, computed once per count
+  /// rather than per point); `coordinates` 1 computes only the first.
+  template <Fast kind, int coordinates>
+  std::array<double, 2> kind_point(SetKey key, std::uint64_t root, std::uint64_t index) const noexcept {
+    if constexpr (kind == Fast::random) {
+      return uniform_pair<coordinates>(key.a, index);
+    } else if constexpr (kind == Fast::sobol_owen_hash) {
+      const double x = sobol_->sample(index, 0, HashOwenScrambler::Dimension(key.a));
+      if constexpr (coordinates == 1) return {x, 0.0};
+      else return {x, sobol_->sample(index, 1, HashOwenScrambler::Dimension(key.b))};
+    } else if constexpr (kind == Fast::jittered) {
+      // Jittered(StrataShape::equal(n, 2), seed).sample(index, ·) without the
+      // shape's vectors: cell (index mod k, index div k) of the k × k grid.
+      const std::uint64_t k = root;
+      const auto u = uniform_pair<coordinates>(key.a, index);
+      const double x = cell_coordinate<double>(index % k, u[0], k);
+      if constexpr (coordinates == 1) return {x, 0.0};
+      else return {x, cell_coordinate<double>((index / k) % k, u[1], k)};
+    } else {
+      static_assert(kind == Fast::pmj02);
+      const Pmj02 pmj(2, key.a);
+      const double x = pmj.sample(index, 0);
+      if constexpr (coordinates == 1) return {x, 0.0};
+      else return {x, pmj.sample(index, 1)};
+    }
+  }
+  template <int coordinates>
+  std::array<double, 2> keyed_point(SetKey key, std::uint64_t root, std::uint64_t index) const noexcept {
+    switch (fast_) {
+      case Fast::random: return kind_point<Fast::random, coordinates>(key, root, index);
+      case Fast::sobol_owen_hash: return kind_point<Fast::sobol_owen_hash, coordinates>(key, root, index);
+      case Fast::jittered: return kind_point<Fast::jittered, coordinates>(key, root, index);
+      case Fast::pmj02: return kind_point<Fast::pmj02, coordinates>(key, root, index);
+      case Fast::none: break;
+    }
+    return {0, 0};
+  }
+  template <Fast kind>
+  void keyed_points(SetKey key, std::uint64_t root, std::uint32_t n, std::array<double, 2>* out) const noexcept {
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = kind_point<kind, 2>(key, root, i);
+  }
+  std::array<double, 2> direct_point(std::uint64_t seed, std::uint64_t root, std::uint64_t index) const noexcept {
+    return keyed_point<2>(set_key(seed), root, index);
+  }
+  /// set_key of this pixel's get_2d set `dimension`, seed hash64(pixel_key_, dimension) (cached per pixel).
+  SetKey dimension_key(std::uint32_t dimension) noexcept {
+    const std::uint32_t bit = dimension < cached_dimensions ? 1u << dimension : 0u;
+    if (dimension_valid_ & bit) return dimension_keys_[dimension];
+    const SetKey key = set_key(mixed(link(pixel_mix_, dimension)));
+    if (bit) dimension_keys_[dimension] = key, dimension_valid_ |= bit;
+    return key;
+  }
+  /// hash64(pixel_key_, tag_array, dimension, ·)'s chain up to the last link's mix (cached per pixel).
+  std::uint64_t array_prefix(std::uint32_t dimension) noexcept {
+    const std::uint32_t bit = dimension < cached_dimensions ? 1u << dimension : 0u;
+    if (array_valid_ & bit) return array_prefixes_[dimension];
+    const std::uint64_t prefix = mixed(link(array_mix_, dimension));
+    if (bit) array_prefixes_[dimension] = prefix, array_valid_ |= bit;
+    return prefix;
+  }
   /// Whether the direct path can produce an n-point set.
   bool direct_for(std::uint64_t n) const noexcept;
 
   PixelSamplerSettings settings_;
-  enum class Fast { none, random, sobol_owen_hash, jittered, pmj02 };
   Fast fast_ = Fast::none;  ///< a direct path for the common samplers
   bool halton_permute_ = false;  ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
   std::string spacetime_;  ///< the space-time sampler, or empty
+  bool has_spacetime_ = false;
   std::uint64_t pixel_key_ = 0;
+  std::uint32_t pixel_x_ = 0, pixel_y_ = 0;
   bool first_pixel_ = true;
+  /// Per-pixel caches of the seed hashing that all samples of a pixel share
+  /// (direct paths): hash64's first mix of the pixel key, of its array tag,
+  /// and per dimension (bit set in the masks when valid) the set keys and array prefixes.
+  static constexpr std::uint32_t cached_dimensions = 32;
+  std::uint64_t pixel_mix_ = 0, array_mix_ = 0;
+  std::uint32_t dimension_valid_ = 0, array_valid_ = 0;
+  std::array<SetKey, cached_dimensions> dimension_keys_{};
+  const Sobol* sobol_ = nullptr;  ///< sobol_2d() on the sobol path
+  std::array<std::uint64_t, cached_dimensions> array_prefixes_{};
   std::uint64_t spp_root_ = 0;               ///< ⌊√spp⌋ (jittered's strata per axis)
   std::uint32_t array_n_ = 0;                ///< the last get_2d_array count …
   std::uint64_t array_root_ = 0;             ///< … and ⌊√n⌋
