@@ -172,8 +172,8 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     const std::uint64_t key = hash64(settings_.seed, tag_pixel, x, y);
     pixel_key_ = key, pixel_x_ = x, pixel_y_ = y;
     first_pixel_ = false;
-    pixel_mix_ = mixed(key);
-    array_mix_ = mixed(link(pixel_mix_, tag_array));
+    pixel_mix_ = hash64(key);
+    array_mix_ = hash64_extend(pixel_mix_, tag_array);
     dimension_valid_ = array_valid_ = 0;
     for (auto& set : sets_) set.n = 0;  // stale: redrawn on first use
     for (auto& set : halton_sets_) set.coordinates = 0;

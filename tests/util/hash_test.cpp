@@ -14,6 +14,18 @@ TEST(Hash, CountersAreOrderSensitiveAndDeterministic) {
   EXPECT_NE(hash64(1, 2), hash64(2, 2));
 }
 
+TEST(Hash, ExtendEqualsTheLongerHash) {
+  // hash64_extend(hash64(s, c…), c') is hash64(s, c…, c') for any number of
+  // leading counters (the chain the renderer caches per pixel).
+  for (std::uint64_t s : {0ull, 1ull, 0x9e3779b97f4a7c15ull, ~0ull})
+    for (std::uint64_t c : {0ull, 7ull, 1ull << 40, ~0ull}) {
+      EXPECT_EQ(hash64_extend(hash64(s), c), hash64(s, c));
+      EXPECT_EQ(hash64_extend(hash64(s, 3), c), hash64(s, 3, c));
+      EXPECT_EQ(hash64_extend(hash64(s, c, 5), 9), hash64(s, c, 5, 9));
+      EXPECT_EQ(hash64_extend(hash64_extend(hash64(s), c), 2), hash64(s, c, 2));
+    }
+}
+
 TEST(Hash, UnitConversionsStayBelowOne) {
   EXPECT_EQ(bits_to_double(0), 0.0);
   EXPECT_LT(bits_to_double(~0ull), 1.0);

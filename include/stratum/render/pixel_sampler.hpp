@@ -87,7 +87,7 @@ class PixelSampler {
   /// n points stratified among themselves (n must be a count the sampler takes).
   void get_2d_array(std::uint32_t n, std::array<double, 2>* out) {
     // seed = hash64(pixel_key_, tag_array, dimension, index_)
-    const std::uint64_t seed = mixed(link(array_prefix(dimension_++), index_));
+    const std::uint64_t seed = hash64_extend(array_prefix(dimension_++), index_);
     if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
     switch (fast_) {
       case Fast::random: return keyed_points<Fast::random>(set_key(seed), array_root_, n, out);
@@ -147,26 +147,16 @@ class PixelSampler {
   std::vector<HaltonSet> halton_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
   std::vector<unsigned __int128> halton_weights_[2];  ///< W_j of bases 2 and 3 (digits.hpp)
 
-  // hash64's chain (util/hash.hpp), spelled out so that the parts many draws
-  // share are computed once: hash64(s, c₁, …, c_k) = mix64(t_k + golden)
-  // with t₀ = s, t_j = mix64(t_{j−1} + golden) ^ counter(c_j). A pixel's key,
-  // a dimension's seed, the array seed's (tag, dimension) prefix and a set's
-  // key are each mixed once per pixel (or per set) instead of once per draw.
-  // Bit-identical to hash64 (the direct paths are tested against the registry).
-  static constexpr std::uint64_t golden = 0x9e3779b97f4a7c15ULL;
-  static constexpr std::uint64_t counter(std::uint64_t c) noexcept {
-    return c * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL;
-  }
-  /// One link of the chain, t_j, from the previous link's mix m = mixed(t_{j−1}).
-  static constexpr std::uint64_t link(std::uint64_t m, std::uint64_t c) noexcept { return m ^ counter(c); }
-  static constexpr std::uint64_t mixed(std::uint64_t t) noexcept { return mix64(t + golden); }
-  /// uniform01(seed, index, 0) and (if coordinates == 2) uniform01(seed, index, 1), from m = mixed(seed).
+  // The seed hashing a pixel's draws share is done once per pixel (or per
+  // set) with hash64_extend (util/hash.hpp): the pixel key's hash, a
+  // dimension's set key, the array seeds' (tag, dimension) prefix.
+  /// uniform01(seed, index, 0) and (if coordinates == 2) uniform01(seed, index, 1), from m = hash64(seed).
   template <int coordinates>
   static std::array<double, 2> uniform_pair(std::uint64_t m, std::uint64_t index) noexcept {
-    const std::uint64_t t = mixed(link(m, index));
-    const double x = bits_to_double(mixed(link(t, 0)));
+    const std::uint64_t t = hash64_extend(m, index);
+    const double x = bits_to_double(hash64_extend(t, 0));
     if constexpr (coordinates == 1) return {x, 0.0};
-    else return {x, bits_to_double(mixed(link(t, 1)))};
+    else return {x, bits_to_double(hash64_extend(t, 1))};
   }
   /// Sobol' (0,2)-sequence tables, shared by every pixel sampler.
   static const Sobol& sobol_2d();
@@ -181,8 +171,8 @@ class PixelSampler {
     std::uint64_t a = 0, b = 0;
   };
   SetKey set_key(std::uint64_t seed) const noexcept {
-    if (fast_ == Fast::random) return {mixed(seed)};                           // RandomPattern: uniform01(seed, ·, ·)
-    if (fast_ == Fast::jittered) return {mixed(hash64(seed, tag_jittered))};  // Jittered: uniform01(key, ·, ·)
+    if (fast_ == Fast::random) return {hash64(seed)};                           // RandomPattern: uniform01(seed, ·, ·)
+    if (fast_ == Fast::jittered) return {hash64(hash64(seed, tag_jittered))};  // Jittered: uniform01(key, ·, ·)
     if (fast_ == Fast::sobol_owen_hash) {  // HashOwenScrambler(seed)'s scramblers of dimensions 0 and 1
       const std::uint64_t base = hash64(seed, 0x6f68617368ULL /* "ohash" */);
       return {base2_detail::dimension_key(base, 0), base2_detail::dimension_key(base, 1)};
@@ -239,7 +229,7 @@ class PixelSampler {
   SetKey dimension_key(std::uint32_t dimension) noexcept {
     const std::uint32_t bit = dimension < cached_dimensions ? 1u << dimension : 0u;
     if (dimension_valid_ & bit) return dimension_keys_[dimension];
-    const SetKey key = set_key(mixed(link(pixel_mix_, dimension)));
+    const SetKey key = set_key(hash64_extend(pixel_mix_, dimension));
     if (bit) dimension_keys_[dimension] = key, dimension_valid_ |= bit;
     return key;
   }
@@ -247,7 +237,7 @@ class PixelSampler {
   std::uint64_t array_prefix(std::uint32_t dimension) noexcept {
     const std::uint32_t bit = dimension < cached_dimensions ? 1u << dimension : 0u;
     if (array_valid_ & bit) return array_prefixes_[dimension];
-    const std::uint64_t prefix = mixed(link(array_mix_, dimension));
+    const std::uint64_t prefix = hash64_extend(array_mix_, dimension);
     if (bit) array_prefixes_[dimension] = prefix, array_valid_ |= bit;
     return prefix;
   }

@@ -26,6 +26,13 @@ constexpr std::uint64_t hash64(std::uint64_t seed, std::uint64_t first, Rest... 
                 rest...);
 }
 
+/// hash64(seed, c₁, …, c_k, c) from h = hash64(seed, c₁, …, c_k): one mix
+/// instead of k + 2, for loops where only the last counters vary (hash64 is
+/// a chain: each counter is xored into the previous mix).
+constexpr std::uint64_t hash64_extend(std::uint64_t h, std::uint64_t c) noexcept {
+  return mix64((h ^ (c * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + 0x9e3779b97f4a7c15ULL);
+}
+
 /// Top 53 bits of a 64-bit word as a double in [0, 1).
 constexpr double bits_to_double(std::uint64_t bits) noexcept {
   return static_cast<double>(bits >> 11) * 0x1.0p-53;
