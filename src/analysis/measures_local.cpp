@@ -17,11 +17,6 @@ namespace {
 /// The box sweep is O(N²) time: at 20000 points about a second.
 constexpr std::size_t kMaxBoxPoints = 20000;
 
-void no_params(const MeasureRequest& request) {
-  if (!request.params.empty())
-    throw invalid_argument("param", request.params.begin()->first, "this measure takes no parameters");
-}
-
 MeasureInfo star_box() {
   MeasureInfo info;
   info.name = "star-box";
@@ -30,8 +25,7 @@ MeasureInfo star_box() {
       "box's upper edges included, approached from above; 0: too few) and count (points in it); O(N^2) sweep, "
       "N <= 20000 (Niederreiter 1992, Def. 2.1; Gnewuch, Srivastav, Winzen 2009, Lemma 1.1)";
   info.min_dim = info.max_dim = 2;
-  info.validate = [](const PointView& points, const MeasureRequest& request) {
-    no_params(request);
+  info.validate = [](const PointView& points, const MeasureRequest&) {
     require(points.n <= kMaxBoxPoints, "n", points.n, "the star-box sweep takes at most 20000 points (O(N^2))");
   };
   info.compute = [](const PointView& points, const MeasureRequest&) {
@@ -53,8 +47,7 @@ MeasureInfo koksma_hlawka() {
       "of closed-form Hardy-Krause variation (Niederreiter 1992, Thm. 2.11): value max_f error/bound (<= 1 when it "
       "holds), extras star (D*, exact sweep), holds (count), error:F and bound:F per function F";
   info.min_dim = info.max_dim = 2;
-  info.validate = [](const PointView& points, const MeasureRequest& request) {
-    no_params(request);
+  info.validate = [](const PointView& points, const MeasureRequest&) {
     require(star_exact_feasible(points.n, 2), "n", points.n, "the exact 2D star discrepancy takes at most 2^18 points");
   };
   info.compute = [](const PointView& points, const MeasureRequest& request) {
