@@ -25,14 +25,11 @@ struct KoksmaHlawkaOptions : PointInput {
   bool json = false, list = false;
 };
 
-/// D*_N from the registry's `star` measure: exact up to its limit (2D:
-/// N ≤ 2^18), above it Thiémard's upper bound, which keeps the inequality
-/// true (error ≤ V·D* ≤ V·upper); or the caller's --star.
+/// The caller's --star, or koksma_hlawka_star's D*_N (exact, or an upper bound).
 std::pair<double, std::string> star_of(const sa::PointView& view, const KoksmaHlawkaOptions& o) {
   if (o.star) return {*o.star, "given"};
-  const sa::MeasureResult r = sa::compute_measure("star", view, {{}, static_cast<unsigned>(o.threads)});
-  if (r.kind == "bounds") return {r.upper.value_or(r.value), "upper bound"};
-  return {r.value, "exact"};
+  const sa::KoksmaHlawkaStar star = sa::koksma_hlawka_star(view, static_cast<unsigned>(o.threads));
+  return {star.value, star.kind};
 }
 
 void print_functions(bool json) {

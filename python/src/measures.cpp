@@ -128,6 +128,17 @@ py::list koksma_hlawka(const Array& x, double star) {
   return list;
 }
 
+/// (D*, "exact" | "upper bound"): the D* koksma_hlawka checks with by default.
+py::tuple koksma_hlawka_star(const Array& x, unsigned threads) {
+  const sa::PointView view = view_of(x);
+  sa::KoksmaHlawkaStar star;
+  {
+    py::gil_scoped_release release;
+    star = sa::koksma_hlawka_star(view, threads);
+  }
+  return py::make_tuple(star.value, star.kind);
+}
+
 double update_centered(const Array& x_new, const Array& sample, double initial) {
   const sa::PointView view = view_of(sample);
   if (x_new.ndim() != 1 || static_cast<std::size_t>(x_new.shape(0)) != view.d)
@@ -145,6 +156,7 @@ void bind_measures(py::module_& m) {
   m.def("local_discrepancy", &local_discrepancy, py::arg("x"), py::arg("resolution"));
   m.def("variation_test_functions", &variation_test_functions);
   m.def("koksma_hlawka", &koksma_hlawka, py::arg("x"), py::arg("star"));
+  m.def("koksma_hlawka_star", &koksma_hlawka_star, py::arg("x"), py::arg("threads"));
   m.def("update_centered_discrepancy", &update_centered, py::arg("x_new"), py::arg("sample"), py::arg("initial"));
 }
 

@@ -188,8 +188,7 @@ def koksma_hlawka(x, star_discrepancy: float | None = None, threads: int = 1) ->
     if points.shape[1] != 2:
         raise InvalidArgument(f"invalid d = {points.shape[1]}: the Koksma-Hlawka test functions are 2D")
     if star_discrepancy is None:
-        result = measure(points, "star", threads)
-        star, kind = (result["value"], "exact") if result["kind"] == "exact" else (result["upper"], "upper bound")
+        star, kind = _stratum.koksma_hlawka_star(points, _threads(threads))
     else:
         if isinstance(star_discrepancy, (bool, np.bool_)) or not isinstance(star_discrepancy, (numbers.Real, np.floating)):
             raise InvalidArgument(f"invalid star_discrepancy = {star_discrepancy!r}: must be a number in [0, 1]")

@@ -52,6 +52,12 @@ const std::vector<VariationTestFunction>& variation_test_functions() {
   return functions;
 }
 
+KoksmaHlawkaStar koksma_hlawka_star(const PointView& points, unsigned threads) {
+  const MeasureResult star = compute_measure("star", points, {{}, threads});
+  if (star.kind == "bounds") return {star.upper.value_or(star.value), "upper bound"};
+  return {star.value, "exact"};
+}
+
 std::vector<KoksmaHlawkaCheck> koksma_hlawka_checks(const PointView& points, double star_discrepancy) {
   require(points.d == 2, "d", points.d, "the Koksma–Hlawka test functions are 2D");
   check_unit_cube(points);

@@ -57,6 +57,15 @@ struct KoksmaHlawkaCheck {
   bool holds = false;   ///< error ≤ bound (up to 1e-12 relative rounding of the sum)
 };
 
+/// The D*_N the inequality is checked with, when the caller has none: the
+/// registry's `star` measure, exact where it is (2D: N ≤ 2^18), above that
+/// Thiémard's upper bound (the inequality stays true with any upper bound).
+struct KoksmaHlawkaStar {
+  double value = 0;
+  std::string kind;  ///< "exact" or "upper bound"
+};
+KoksmaHlawkaStar koksma_hlawka_star(const PointView& points, unsigned threads);
+
 /// Evaluates every test function on `points` (2D, in [0,1]) and compares
 /// with V_HK(f) · `star_discrepancy` (the caller's D*_N of the same points).
 std::vector<KoksmaHlawkaCheck> koksma_hlawka_checks(const PointView& points, double star_discrepancy);
