@@ -130,34 +130,32 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
   // Direct paths, bit-identical to the registry's (tested): the registry call
   // validates and sets up bulk generation, microseconds per call, which
   // dominates when drawing a few points per pixel and dimension.
-  if (sampler == settings_.sampler && d == 2 && direct_for(n)) {
-    PointSet points{n, d, std::make_unique<double[]>(n * d)};
-    const std::uint64_t root = integer_root(n, 2);
-    for (std::uint64_t i = 0; i < n; ++i) {
-      const auto p = direct_point(seed, root, i);
-      points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
+  if (sampler == settings_.sampler && d == 2) {
+    // The n-point 2D set whose point i is point(i).
+    const auto set_of = [n](auto point) {
+      PointSet points{n, 2, std::make_unique<double[]>(n * 2)};
+      for (std::uint64_t i = 0; i < n; ++i) {
+        const std::array<double, 2> p = point(i);
+        points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
+      }
+      return points;
+    };
+    if (direct_for(n)) {
+      const std::uint64_t root = integer_root(n, 2);
+      return set_of([&](std::uint64_t i) { return direct_point(seed, root, i); });
     }
-    return points;
-  }
-  if (sampler == settings_.sampler && d == 2 && halton_permute_ && n <= halton_direct_max) {
-    HaltonSet set;
-    build_halton_set(seed, n, set);
-    PointSet points{n, d, std::make_unique<double[]>(n * d)};
-    for (std::uint64_t i = 0; i < n; ++i) {
-      const auto p = halton_point(set, i);
-      points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
+    if (halton_permute_ && n <= halton_direct_max) {
+      HaltonSet set;
+      build_halton_set(seed, n, set);
+      return set_of([&](std::uint64_t i) { return halton_point(set, i); });
     }
-    return points;
-  }
-  if (sampler == settings_.sampler && d == 2 && halton_permute_) {
-    // The registry's scrambler for these bases and indices, without its
-    // request handling: each point straight from RandomDigitPermutations
-    // (sample() equals the registry's tabulated fill bit for bit).
-    const RandomDigitPermutations permutations(seed, {2, 3}, n - 1);
-    PointSet points{n, d, std::make_unique<double[]>(n * d)};
-    for (std::uint64_t i = 0; i < n; ++i)
-      points.data[2 * i] = permutations.sample(i, 0), points.data[2 * i + 1] = permutations.sample(i, 1);
-    return points;
+    if (halton_permute_) {
+      // The registry's scrambler for these bases and indices, without its
+      // request handling: each point straight from RandomDigitPermutations
+      // (sample() equals the registry's tabulated fill bit for bit).
+      const RandomDigitPermutations permutations(seed, {2, 3}, n - 1);
+      return set_of([&](std::uint64_t i) { return std::array{permutations.sample(i, 0), permutations.sample(i, 1)}; });
+    }
   }
   SamplerRequest request;
   request.n = n;
