@@ -3,13 +3,16 @@
 // rays per sample, area light sampling); a recording pass replays the same
 // sampler draws to list exactly the rays the integrator traces; bare Embree
 // then traces that list (rtcIntersect1 for eye rays, rtcOccluded1 for shadow
-// rays) in the same run, on the same number of threads. Counters: rays/s of
-// both, samples/s of the integrator, and their ratio (target ≥ 0.8 on one
-// thread), by wall-clock time and by process CPU time (ratio_cpu: less
-// sensitive to other processes preempting this one on a loaded machine), and
-// ratio_traced without render()'s BVH build (timed alone each iteration;
-// the bare scene's build is untimed), which matters for the third argument's
-// scene 1, the Cornell box with a 131k-triangle sphere mesh.
+// rays) in the same run, on the same number of threads; both on BVHs built
+// beforehand, untimed (render(accelerator, …)). Counters: rays/s of both,
+// samples/s of the integrator, and their ratio (target ≥ 0.8 on one thread),
+// by wall-clock time and by process CPU time (ratio_cpu: less sensitive to
+// other processes preempting this one on a loaded machine). A cost ladder
+// between the two (trace_wrapped) splits render()'s time per sample into
+// Embree, stratum's Accelerator calls, the sampler's draws and the rest of
+// the integrator, and gives the ratio each rung alone would leave.
+// The third argument picks the scene: 0 the Cornell box, 1 the same with a
+// 131k-triangle sphere mesh.
 // The second argument picks the pixel sampler: random, sobol, jittered and
 // pmj02 take the PixelSampler's direct paths, halton (permute) its
 // table-free path (the permutations a set needs, built per pixel and
@@ -30,6 +33,7 @@
 #include <cmath>
 #include <string>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "stratum/render/bsdf.hpp"
@@ -94,7 +98,12 @@ Scene bench_scene(int kind = 0) {
 }
 
 struct Recorded {
-  std::vector<RTCRay> eye, shadow;
+  std::vector<RTCRay> eye, shadow;  // for bare Embree
+  // The same rays as stratum's, for the cost ladder (BM_CostLadder): by eye
+  // ray (one per sample, in record()'s order), whether it hits and where its
+  // shadow rays end in shadow_rays.
+  std::vector<Ray> eye_rays, shadow_rays;
+  std::vector<std::uint32_t> shadow_end;
 };
 
 RTCRay to_rtc(const Ray& ray, double t_near) {
@@ -124,8 +133,12 @@ Recorded record(const Scene& scene, const RenderSettings& s) {
         const auto lens = sampler.get_2d();
         const Ray ray = camera.generate(x + film[0], y + film[1], lens, time);
         rays.eye.push_back(to_rtc(ray, eps));
+        rays.eye_rays.push_back(ray);
         const auto hit = accelerator.intersect(ray);
-        if (!hit) continue;
+        if (!hit) {
+          rays.shadow_end.push_back(std::uint32_t(rays.shadow_rays.size()));
+          continue;
+        }
         const Material& m = scene.materials[scene.shapes[hit->shape].material];
         const Vec3 n = dot(hit->normal, ray.direction) < 0 ? hit->normal : -hit->normal;
         const Bsdf bsdf(m, n, -normalize(ray.direction));
@@ -138,8 +151,11 @@ Recorded record(const Scene& scene, const RenderSettings& s) {
           if (!ls || dot(n, ls->wi) <= 0) continue;
           const Vec3 f = bsdf.eval(ls->wi);
           if (f.x <= 0 && f.y <= 0 && f.z <= 0) continue;
-          rays.shadow.push_back(to_rtc({hit->position, ls->wi, time, ls->distance - 2 * eps}, eps));
+          const Ray shadow{hit->position, ls->wi, time, ls->distance - 2 * eps};
+          rays.shadow.push_back(to_rtc(shadow, eps));
+          rays.shadow_rays.push_back(shadow);
         }
+        rays.shadow_end.push_back(std::uint32_t(rays.shadow_rays.size()));
       }
   return rays;
 }
@@ -233,6 +249,46 @@ double process_cpu_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+/// The cost ladder between bare Embree and render(): the recorded rays
+/// through stratum's Accelerator (double rays converted to Embree's, hits
+/// made into Hit records), sample by sample as the integrator traces them;
+/// with `draws`, each sample also takes the sampler draws the integrator
+/// takes (film, time, lens; at a hit the shadow-ray array and the light
+/// offset). What render() takes beyond this is the integrator's own
+/// arithmetic (camera, light samples, BSDF, sums) and its frame (tiles,
+/// film), which no integrator over these draws and wrappers can avoid
+/// entirely. Returns the hit count (kept alive).
+std::size_t trace_wrapped(const Accelerator& accelerator, const Recorded& rays, const PixelSampler* draws) {
+  std::atomic<std::size_t> hits{0};
+  const std::size_t samples = rays.eye_rays.size(), chunk = 1024;
+  tbb::parallel_for(std::size_t(0), (samples + chunk - 1) / chunk, [&](std::size_t c) {
+    std::optional<PixelSampler> sampler;
+    if (draws) sampler.emplace(*draws);
+    std::size_t local = 0;
+    double drawn = 0;
+    std::array<double, 2> u[kShadow];
+    for (std::size_t s = c * chunk; s < std::min(samples, (c + 1) * chunk); ++s) {
+      if (sampler) {  // record()'s order: pixels row by row, kSpp samples each
+        const std::size_t pixel = s / kSpp;
+        sampler->start_pixel_sample(std::uint32_t(pixel % kSize), std::uint32_t(pixel / kSize), std::uint32_t(s % kSpp));
+        drawn += sampler->get_pixel_2d()[0] + sampler->get_time() + sampler->get_2d()[0];
+      }
+      const auto hit = accelerator.intersect(rays.eye_rays[s]);
+      if (!hit) continue;
+      ++local;
+      if (sampler) {
+        sampler->get_2d_array(kShadow, u);
+        drawn += u[0][0] + sampler->get_1d();
+      }
+      for (std::size_t r = s == 0 ? 0 : rays.shadow_end[s - 1]; r < rays.shadow_end[s]; ++r)
+        local += accelerator.occluded(rays.shadow_rays[r]);
+    }
+    benchmark::DoNotOptimize(drawn);
+    hits += local;
+  });
+  return hits;
+}
+
 void BM_DirectVsBareEmbree(benchmark::State& state) {
   const unsigned threads = unsigned(state.range(0));
   const char* sampler = kSamplers[std::size_t(state.range(1))];
@@ -241,38 +297,47 @@ void BM_DirectVsBareEmbree(benchmark::State& state) {
   const RenderSettings settings = bench_settings(threads, sampler);
   const Recorded rays = record(scene, settings);
   const BareScene bare(scene);
+  const Accelerator accelerator(scene);
+  const PixelSampler draws(settings.sampler);
   const double ray_count = double(rays.eye.size() + rays.shadow.size());
   tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
-  double render_seconds = 0, bare_seconds = 0, render_cpu = 0, bare_cpu = 0, build_seconds = 0;
+  // Each iteration times, in turn: render() on the BVH built above (as the
+  // bare scene's, untimed), bare Embree, and the ladder's two rungs.
+  enum { kRender, kBare, kWrapped, kDrawn };
+  double seconds[4] = {}, cpu[4] = {};
   std::int64_t iterations = 0;
   for (auto _ : state) {
-    auto start = std::chrono::steady_clock::now();
-    double cpu = process_cpu_seconds();
-    benchmark::DoNotOptimize(render(scene, settings).rgb.data());
-    render_seconds += seconds_since(start);
-    render_cpu += process_cpu_seconds() - cpu;
-    start = std::chrono::steady_clock::now();
-    cpu = process_cpu_seconds();
-    benchmark::DoNotOptimize(trace(bare, rays));
-    bare_seconds += seconds_since(start);
-    bare_cpu += process_cpu_seconds() - cpu;
-    // render() builds its BVH each call; the bare scene's was built once,
-    // untimed. The same build, timed alone, for ratio_traced.
-    start = std::chrono::steady_clock::now();
-    { const Accelerator build(scene); }
-    build_seconds += seconds_since(start);
+    const auto timed = [&](int k, auto work) {
+      const auto start = std::chrono::steady_clock::now();
+      const double cpu_start = process_cpu_seconds();
+      benchmark::DoNotOptimize(work());
+      seconds[k] += seconds_since(start);
+      cpu[k] += process_cpu_seconds() - cpu_start;
+    };
+    timed(kRender, [&] { return render(accelerator, settings).rgb[0]; });
+    timed(kBare, [&] { return trace(bare, rays); });
+    timed(kWrapped, [&] { return trace_wrapped(accelerator, rays, nullptr); });
+    timed(kDrawn, [&] { return trace_wrapped(accelerator, rays, &draws); });
     ++iterations;
   }
-  const double integrator_rate = ray_count * double(iterations) / render_seconds;
-  const double bare_rate = ray_count * double(iterations) / bare_seconds;
+  const double integrator_rate = ray_count * double(iterations) / seconds[kRender];
+  const double bare_rate = ray_count * double(iterations) / seconds[kBare];
+  const double samples = double(kSize * kSize * kSpp) * double(iterations);
   state.counters["rays"] = ray_count;
   state.counters["integrator_rays_per_s"] = integrator_rate;
   state.counters["bare_embree_rays_per_s"] = bare_rate;
-  state.counters["samples_per_s"] = double(kSize * kSize * kSpp) * double(iterations) / render_seconds;
+  state.counters["samples_per_s"] = samples / seconds[kRender];
   state.counters["ratio"] = integrator_rate / bare_rate;
-  state.counters["ratio_cpu"] = bare_cpu / render_cpu;
-  state.counters["ratio_traced"] = bare_seconds / (render_seconds - build_seconds);  // without the BVH build
-  state.counters["build_ms"] = 1e3 * build_seconds / double(iterations);
+  state.counters["ratio_cpu"] = cpu[kBare] / cpu[kRender];
+  // The ladder: the best ratio an integrator could reach with stratum's
+  // Accelerator calls alone, and with them and the sampler's draws; and
+  // where render()'s time per sample goes, in ns.
+  state.counters["ratio_wrapped"] = seconds[kBare] / seconds[kWrapped];
+  state.counters["ratio_wrapped_draws"] = seconds[kBare] / seconds[kDrawn];
+  state.counters["ns_embree"] = 1e9 * seconds[kBare] / samples;
+  state.counters["ns_wrappers"] = 1e9 * (seconds[kWrapped] - seconds[kBare]) / samples;
+  state.counters["ns_draws"] = 1e9 * (seconds[kDrawn] - seconds[kWrapped]) / samples;
+  state.counters["ns_integrator"] = 1e9 * (seconds[kRender] - seconds[kDrawn]) / samples;
 }
 
 /// The fixed cost of one render() call (Embree device and BVH, buffers,

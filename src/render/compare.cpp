@@ -244,7 +244,8 @@ constexpr std::uint32_t progressive_set = 4096;
 
 }  // namespace
 
-Image render_equal_time(const Scene& scene, const RenderSettings& settings, double seconds, std::uint32_t* passes) {
+Image render_equal_time(const Accelerator& accelerator, const RenderSettings& settings, double seconds,
+                        std::uint32_t* passes) {
   require(std::isfinite(seconds) && seconds > 0 && seconds <= 1e6, "equal-time", seconds, "must be in (0, 1e6] seconds");
   validate_settings(settings);
   const auto start = std::chrono::steady_clock::now();
@@ -262,7 +263,7 @@ Image render_equal_time(const Scene& scene, const RenderSettings& settings, doub
     pass.passes = set_passes;
     pass.time_limit = progressive ? std::max(seconds - elapsed(), 1e-9) : 0;
     if (set > 0) pass.sampler.seed = hash64(settings.sampler.seed, set);
-    const Image image = render(scene, pass);
+    const Image image = render(accelerator, pass);
     const double n = image.samples;
     if (set == 0) {
       total = image;
@@ -308,6 +309,7 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
     std::filesystem::create_directories(options.variance_dir, error);
     if (error) throw invalid_argument("variance-dir", options.variance_dir, "must be a folder stratum can create: " + error.message());
   }
+  const Accelerator accelerator(scene);  // one BVH for every configuration
   std::map<std::string, Image> references;  // one per estimand (integrator)
   std::vector<CompareRow> rows;
   for (std::size_t index = 0; index < configs.size(); ++index) {
@@ -324,8 +326,8 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
       }
     }
     CompareRow row;
-    Image image = options.equal_time > 0 ? render_equal_time(scene, config.settings, options.equal_time, &row.passes)
-                                               : render(scene, config.settings);
+    Image image = options.equal_time > 0 ? render_equal_time(accelerator, config.settings, options.equal_time, &row.passes)
+                                         : render(accelerator, config.settings);
     row.label = config.label;
     row.samples = image.samples;
     row.mse = mean_squared_error(image, references[estimand]);

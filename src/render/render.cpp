@@ -37,13 +37,17 @@ void validate_settings(const RenderSettings& s) {
   }
 }
 
-Image render(const Scene& scene, const RenderSettings& settings,
-             const std::function<void(std::uint32_t, std::uint32_t, double)>& progress, const std::atomic<bool>* stop) {
-  validate_settings(settings);
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// render()'s work from `start` (when its clock started: before or after the BVH build).
+Image render_from(Clock::time_point start, const Accelerator& accelerator, const RenderSettings& settings,
+                  const std::function<void(std::uint32_t, std::uint32_t, double)>& progress,
+                  const std::atomic<bool>* stop) {
+  const Scene& scene = accelerator.scene();
   const PixelSampler prototype{settings.sampler};  // one per tile is copied from it
-  const auto start = std::chrono::steady_clock::now();
-  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  const Accelerator accelerator(scene);
+  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   const CameraModel camera(scene.camera);
   const Integrator integrator(scene, accelerator, settings);
   const int width = camera.width(), height = camera.height();
@@ -107,6 +111,22 @@ Image render(const Scene& scene, const RenderSettings& settings,
   }
   image.seconds = elapsed();
   return image;
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderSettings& settings,
+             const std::function<void(std::uint32_t, std::uint32_t, double)>& progress, const std::atomic<bool>* stop) {
+  validate_settings(settings);
+  const auto start = Clock::now();
+  const Accelerator accelerator(scene);
+  return render_from(start, accelerator, settings, progress, stop);
+}
+
+Image render(const Accelerator& accelerator, const RenderSettings& settings,
+             const std::function<void(std::uint32_t, std::uint32_t, double)>& progress, const std::atomic<bool>* stop) {
+  validate_settings(settings);
+  return render_from(Clock::now(), accelerator, settings, progress, stop);
 }
 
 }  // namespace stratum::render

@@ -114,14 +114,15 @@ TEST(Compare, OneEqualTimePassIsTheEqualSampleRender) {
   RenderSettings s = builtin_comparison("pixel-samplers", 1, 7)[1].settings;  // jittered
   s.sampler.spp = 4;
   std::uint32_t passes = 0;
-  const Image once = render_equal_time(scene, s, 1e-9, &passes);
+  const Accelerator accelerator(scene);
+  const Image once = render_equal_time(accelerator, s, 1e-9, &passes);
   const Image plain = render(scene, s);
   EXPECT_EQ(passes, 1u);
   EXPECT_EQ(once.samples, 4u);
   EXPECT_EQ(once.rgb, plain.rgb);
   EXPECT_EQ(once.variance, plain.variance);
-  EXPECT_THROW(render_equal_time(scene, s, -1), invalid_argument);
-  EXPECT_THROW(render_equal_time(scene, s, std::nan("")), invalid_argument);
+  EXPECT_THROW(render_equal_time(accelerator, s, -1), invalid_argument);
+  EXPECT_THROW(render_equal_time(accelerator, s, std::nan("")), invalid_argument);
 }
 
 /// Owen-scrambled Sobol' continues one sequence across equal-time passes:
@@ -132,7 +133,7 @@ TEST(Compare, EqualTimeContinuesAQmcSequence) {
   s.sampler.spp = 4;
   s.light_samples = 2;
   std::uint32_t passes = 0;
-  const Image timed = render_equal_time(scene, s, 0.02, &passes);
+  const Image timed = render_equal_time(Accelerator(scene), s, 0.02, &passes);
   ASSERT_LE(timed.samples, 4096u);  // one set (at 8x8 a pass takes well under a millisecond)
   EXPECT_EQ(timed.samples, 4 * passes);
   s.sampler.spp = timed.samples;

@@ -97,6 +97,28 @@ TEST(Render, SameImageWithOneOrTwoThreads) {
   EXPECT_EQ(one.rgb, two.rgb);
 }
 
+/// A BVH built once serves several renders (compare's configurations) and
+/// gives the images render(scene, …) gives: its scene, its seeds.
+TEST(Render, PrebuiltBvhGivesTheSameImages) {
+  Scene small = cornell_box();
+  small.camera.width = small.camera.height = 12;
+  const Accelerator accelerator(small);
+  EXPECT_EQ(&accelerator.scene(), &small);
+  for (const char* integrator : {"direct", "path"}) {
+    RenderSettings s = settings(integrator, 4);
+    s.passes = 2;
+    const Image built = render(small, s);
+    const Image shared = render(accelerator, s);
+    EXPECT_EQ(shared.rgb, built.rgb) << integrator;
+    EXPECT_EQ(shared.variance, built.variance) << integrator;
+    EXPECT_EQ(shared.samples, built.samples) << integrator;
+    s.sampler.seed = 4;  // another seed on the same BVH: another image
+    EXPECT_NE(render(accelerator, s).rgb, built.rgb) << integrator;
+  }
+  RenderSettings bad = settings("direct", 0);
+  EXPECT_THROW(render(accelerator, bad), invalid_argument);
+}
+
 TEST(Render, AreaAndSolidAngleSamplingAgree) {
   // Per-pixel z-tests of the difference of two independent estimates;
   // Šidák-corrected two-sided α = 0.01 over every pixel and channel tested.

@@ -41,6 +41,8 @@ class Accelerator {
   bool occluded(const Ray& ray) const;
   /// Self-intersection offset along rays: a small fraction of the scene's size.
   double epsilon() const noexcept { return epsilon_; }
+  /// The scene it was built from (which must outlive it).
+  const Scene& scene() const noexcept { return *scene_; }
 
  private:
   struct Embree;

@@ -83,7 +83,9 @@ std::string reference_cache_path(const Scene& scene, const std::string& scene_ke
 
 /// Runs every configuration, at equal samples or at equal time
 /// (options.equal_time), and measures it against its reference; `images`,
-/// when given, receives the renders and the first reference.
+/// when given, receives the renders and the first reference. The
+/// configurations share one BVH, built before the first: a row's seconds
+/// are its sampling and tracing, what the configurations differ in.
 std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
                                 const CompareOptions& options, CompareImages* images = nullptr);
 
@@ -96,8 +98,10 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
 /// complete, independent renders (pass k > 0 with seed hash(seed, k)), each a
 /// whole pattern, unbiased for stratified patterns too. The result is the
 /// mean of all samples: samples = spp × passes, seconds the total wall time
-/// (≥ `seconds`), variance that of the mean.
-Image render_equal_time(const Scene& scene, const RenderSettings& settings, double seconds, std::uint32_t* passes = nullptr);
+/// (≥ `seconds`; the BVH, built beforehand, is not in it), variance that
+/// of the mean.
+Image render_equal_time(const Accelerator& accelerator, const RenderSettings& settings, double seconds,
+                        std::uint32_t* passes = nullptr);
 
 /// Writes `image.variance` (the variance of each pixel's mean, per channel)
 /// as a linear EXR; `path` must end in .exr (checked before any work by

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "stratum/render/accelerator.hpp"
 #include "stratum/render/pixel_sampler.hpp"
 #include "stratum/render/scene.hpp"
 
@@ -47,6 +48,12 @@ void validate_settings(const RenderSettings& settings);
 /// each pass; `stop` (e.g. set by SIGINT) ends the render after the current
 /// pass. Same seed and settings: the same image for any thread count.
 Image render(const Scene& scene, const RenderSettings& settings,
+             const std::function<void(std::uint32_t, std::uint32_t, double)>& progress = {},
+             const std::atomic<bool>* stop = nullptr);
+/// Renders accelerator.scene() on a BVH built beforehand: renders of one
+/// scene (compare's configurations) share one build, and Image::seconds is
+/// then the sampling and tracing alone. The same image as render(scene, …).
+Image render(const Accelerator& accelerator, const RenderSettings& settings,
              const std::function<void(std::uint32_t, std::uint32_t, double)>& progress = {},
              const std::atomic<bool>* stop = nullptr);
 
