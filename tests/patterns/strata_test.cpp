@@ -47,6 +47,45 @@ TEST(CellCoordinate, LargeCountsStillStratify) {
     }
 }
 
+/// below_exactly decides x·n < c with a multiply and, only on a tie, fma:
+/// against fma's exact sign for x walked across c/n ulp by ulp (ties
+/// included: fl(x·n) = c with x·n just below or above c).
+TEST(CellCoordinate, BelowExactlyAgreesWithFmaAcrossBoundaries) {
+  int ties = 0, checked = 0;
+  for (double n : {3.0, 7.0, 10.0, 1000.0, 1023.0, 10000019.0, 0x1.0p40 + 1})
+    for (double c : {1.0, 2.0, 5.0, 999.0, 4999999.0})
+      {
+        double x = c / n;
+        for (int step = 0; step < 32; ++step) x = std::nextafter(x, 0.0);
+        for (int step = 0; step < 64; ++step, x = std::nextafter(x, 2.0)) {
+          ties += x * n == c && std::fma(x, n, -c) != 0;
+          EXPECT_EQ(strata_detail::below_exactly(x, n, c), std::fma(x, n, -c) < 0) << x << " " << n << " " << c;
+          ++checked;
+        }
+      }
+  EXPECT_GT(ties, 0);  // the case that needs fma was met
+  EXPECT_EQ(checked, 7 * 5 * 64);
+}
+
+/// The same points as the correction written with fma on both sides
+/// (stratum's rule before the multiply-first tests), over random offsets,
+/// counts and cells, and offsets at the top of [0, 1).
+TEST(CellCoordinate, SameAsTheFmaCorrection) {
+  const auto with_fma = [](std::uint64_t cell, double offset, std::uint64_t count) {
+    const double n = double(count), lo = double(cell), hi = double(cell + 1);
+    double x = (lo + offset) / n;
+    while (std::fma(x, n, -hi) >= 0 || x * n >= hi) x = std::nextafter(x, 0.0);
+    while (std::fma(x, n, -lo) < 0) x = std::nextafter(x, 1.0);
+    return x;
+  };
+  for (std::uint64_t i = 0; i < 200000; ++i) {
+    const std::uint64_t count = 1 + hash64(i, 1) % (i % 2 ? 1000 : 100000000);
+    const std::uint64_t cell = hash64(i, 2) % count;
+    const double offset = i % 4 == 0 ? 0x1.fffffffffffffp-1 - double(i % 64) * 0x1.0p-53 : bits_to_double(hash64(i, 3));
+    ASSERT_EQ(cell_coordinate(cell, offset, count), with_fma(cell, offset, count)) << cell << "/" << count << " " << offset;
+  }
+}
+
 TEST(CellCoordinate, CentreIsCorrectlyRounded) {
   for (std::uint64_t count : {3ull, 5ull, 6ull, 7ull, 100ull})
     for (std::uint64_t cell = 0; cell < count; ++cell)

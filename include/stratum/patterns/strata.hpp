@@ -25,6 +25,19 @@
 
 namespace stratum {
 
+namespace strata_detail {
+/// x·n < c in exact arithmetic, for a double c. Rounding is monotone and c is
+/// a double, so fl(x·n) < c and fl(x·n) > c already decide it (and
+/// fl(x·n) < c also whenever x·n < c, which is why cell_coordinate's upper
+/// test needs no more than fl(x·n) ≥ hi); only a tie needs fma(x, n, −c),
+/// x·n − c rounded once, whose sign is exact (a software call without
+/// hardware FMA, hence kept off the common path).
+inline bool below_exactly(double x, double n, double c) noexcept {
+  const double product = x * n;
+  return product < c || (product == c && std::fma(x, n, -c) < 0);
+}
+}  // namespace strata_detail
+
 /// (cell + offset) / count for offset in [0, 1), in the caller's precision,
 /// guaranteed to satisfy cell ≤ x · count < cell + 1 exactly and
 /// floor(fl(x · count)) = cell. Requires cell < count ≤ 2^53.
@@ -37,15 +50,13 @@ inline Real cell_coordinate(std::uint64_t cell, double offset, std::uint64_t cou
     float x = to_unit_float((lo + offset) / n);
     const float nf = static_cast<float>(count);
     const float hif = static_cast<float>(cell + 1);
-    // fma(x, n, -c) is x·n − c rounded once, so its sign is exact.
-    while (std::fma(static_cast<double>(x), n, -hi) >= 0 || static_cast<double>(x) * n >= hi || x * nf >= hif)
-      x = std::nextafter(x, 0.0f);
-    while (std::fma(static_cast<double>(x), n, -lo) < 0) x = std::nextafter(x, 1.0f);
+    while (static_cast<double>(x) * n >= hi || x * nf >= hif) x = std::nextafter(x, 0.0f);
+    while (strata_detail::below_exactly(static_cast<double>(x), n, lo)) x = std::nextafter(x, 1.0f);
     return x;
   } else {
     double x = (lo + offset) / n;
-    while (std::fma(x, n, -hi) >= 0 || x * n >= hi) x = std::nextafter(x, 0.0);
-    while (std::fma(x, n, -lo) < 0) x = std::nextafter(x, 1.0);
+    while (x * n >= hi) x = std::nextafter(x, 0.0);  // also ends x·n ≥ hi in exact arithmetic
+    while (strata_detail::below_exactly(x, n, lo)) x = std::nextafter(x, 1.0);
     return x;
   }
 }
