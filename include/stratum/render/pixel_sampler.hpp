@@ -177,6 +177,7 @@ class PixelSampler {
       const std::uint64_t base = hash64(seed, 0x6f68617368ULL /* "ohash" */);
       return {base2_detail::dimension_key(base, 0), base2_detail::dimension_key(base, 1)};
     }
+    if (fast_ == Fast::pmj02) return {Pmj02::digit_key(seed, 0), Pmj02::digit_key(seed, 1)};
     return {seed};
   }
   /// Point `index` of the n-point 2D set that draw(settings_.sampler, n, 2,
@@ -200,11 +201,10 @@ class PixelSampler {
       if constexpr (coordinates == 1) return {x, 0.0};
       else return {x, cell_coordinate<double>((index / k) % k, u[1], k)};
     } else {
-      static_assert(kind == Fast::pmj02);
-      const Pmj02 pmj(2, key.a);
-      const double x = pmj.sample(index, 0);
+      static_assert(kind == Fast::pmj02);  // Pmj02(2, seed)'s pair 0, from its digit keys
+      const double x = bits_to_double(Pmj02::keyed_bits(index, 0, key.a));
       if constexpr (coordinates == 1) return {x, 0.0};
-      else return {x, pmj.sample(index, 1)};
+      else return {x, bits_to_double(Pmj02::keyed_bits(index, 1, key.b))};
     }
   }
   template <int coordinates>

@@ -120,7 +120,35 @@ class Pmj02 {
   constexpr std::uint64_t sample_bits(std::uint64_t index, unsigned dim) const noexcept {
     const unsigned pair = dim / 2;
     if (pair != 0) index = shuffle(index, hash64(seed_, 0x706d6a3032736875ULL, pair));
-    return stochastic_bits(index, dim & 1u, hash64(seed_, 0x706d6a3032646967ULL, dim));
+    return keyed_bits(index, dim & 1u, digit_key(seed_, dim));
+  }
+
+  /// What sample_bits needs of (seed, dim) alone, for callers that take
+  /// many points of one dimension (the renderer's per-pixel sets): with it,
+  /// keyed_bits(index, dim & 1, digit_key(seed, dim)) = sample_bits(index, dim)
+  /// for dimensions 0 and 1 (pair 0, read without a shuffle).
+  static constexpr std::uint64_t digit_key(std::uint64_t seed, unsigned dim) noexcept {
+    return hash64(hash64(seed, 0x706d6a3032646967ULL, dim));
+  }
+  /// Digits of point `index` in coordinate 0 or 1 of a pair's sequence:
+  /// walk the chain index → j → … → 0; the link at msb m fixes digits m+2 …
+  /// (those of the link before) from its own random word hash64(k, link) and
+  /// flips digit m+1 relative to the next link. `key` is hash64(k)
+  /// (digit_key), so each word is one hash64_extend.
+  static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate, std::uint64_t key) noexcept {
+    std::uint64_t value = 0;
+    std::uint64_t flips = 0;
+    std::uint64_t unset = ~std::uint64_t{0};  // digits still to fill (high bits)
+    while (index != 0) {
+      const unsigned m = 63u - static_cast<unsigned>(std::countl_zero(index));
+      const std::uint64_t deeper = m == 63 ? 0 : (~std::uint64_t{0} >> (m + 1));  // digits m+2 …
+      value |= hash64_extend(key, index) & deeper & unset;
+      flips |= std::uint64_t{1} << (63 - m);  // digit m+1
+      unset &= ~deeper;
+      index = (index ^ (std::uint64_t{1} << m)) ^ detail::pmj02_xors[coordinate][m];
+    }
+    value |= hash64_extend(key, 0) & unset;
+    return value ^ flips;
   }
 
   template <class Real = double>
@@ -137,26 +165,6 @@ class Pmj02 {
   }
 
  private:
-  /// Digits of point `index` in one coordinate: walk the chain index → j →
-  /// … → 0; the link at msb m fixes digits m+2 … (those of the link before)
-  /// from its own random word and flips digit m+1 relative to the next link.
-  static constexpr std::uint64_t stochastic_bits(std::uint64_t index, unsigned coordinate,
-                                                 std::uint64_t key) noexcept {
-    std::uint64_t value = 0;
-    std::uint64_t flips = 0;
-    std::uint64_t unset = ~std::uint64_t{0};  // digits still to fill (high bits)
-    while (index != 0) {
-      const unsigned m = 63u - static_cast<unsigned>(std::countl_zero(index));
-      const std::uint64_t deeper = m == 63 ? 0 : (~std::uint64_t{0} >> (m + 1));  // digits m+2 …
-      value |= hash64(key, index) & deeper & unset;
-      flips |= std::uint64_t{1} << (63 - m);  // digit m+1
-      unset &= ~deeper;
-      index = (index ^ (std::uint64_t{1} << m)) ^ detail::pmj02_xors[coordinate][m];
-    }
-    value |= hash64(key, std::uint64_t{0}) & unset;
-    return value ^ flips;
-  }
-
   /// Bijection of [2^k, 2^(k+1)) for k = msb(index): add, multiply by odd
   /// and xor-shift modulo 2^k, each invertible, with seeded constants.
   static constexpr std::uint64_t shuffle(std::uint64_t index, std::uint64_t key) noexcept {
