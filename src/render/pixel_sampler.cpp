@@ -1,5 +1,9 @@
 #include "stratum/render/pixel_sampler.hpp"
 
+#include <algorithm>
+
+#include "halton_digits.hpp"
+
 #include "stratum/patterns/random.hpp"
 #include "stratum/patterns/strata.hpp"
 #include "stratum/randomizers/digit_permutation.hpp"
@@ -76,6 +80,7 @@ void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonS
   // K(b) and m(b) of digits.hpp for bases 2 and 3, as constants.
   static constexpr unsigned positions_of[2] = {digits_detail::digit_count(2), digits_detail::digit_count(3)};
   static constexpr unsigned chunk_of[2] = {digits_detail::chunk_digits(2), digits_detail::chunk_digits(3)};
+  static_assert(positions_of[0] <= 64 && positions_of[1] <= 64);  // halton_zero_images' array below
   const digits_detail::ShuffledPermutationRule rule(seed);  // RandomDigitPermutations' permutations
   for (unsigned c = 0; c < coordinates; ++c) {
     const std::uint32_t base = c + 2;
@@ -91,15 +96,17 @@ void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonS
     // Past the used positions every index has digit 0: π_j(0)·W_j, summed in
     // 128 bits per chunk (the rest of the first chunk kept whole, each later
     // chunk truncated to its top 64 bits, as digits.hpp's tables do).
-    u128 first_rest = 0, sum = 0;
+    std::uint8_t zero[64];  // π_j(0), read for j ≥ used
+    halton_zero_images(rule.dimension_key(c), base, zero);
+    const auto sum_of = [&](unsigned from, unsigned to) {  // Σ π_j(0)·W_j over from ≤ j < to
+      u128 sum = 0;
+      for (unsigned j = from; j < to; ++j) sum += std::uint64_t{zero[j]} * weight[j];
+      return sum;
+    };
     std::uint64_t tail = 0;
-    unsigned j = used;
-    for (; j < chunk; ++j) first_rest += std::uint64_t{rule.image(c, j, base, 0)} * weight[j];
-    for (unsigned in_chunk = 0; j < positions; ++j) {
-      sum += std::uint64_t{rule.image(c, j, base, 0)} * weight[j];
-      if (++in_chunk == chunk || j + 1 == positions) tail += static_cast<std::uint64_t>(sum >> 64), sum = 0, in_chunk = 0;
-    }
-    set.first_chunk_rest[c] = first_rest;
+    for (unsigned start = chunk; start < positions; start += chunk)
+      tail += static_cast<std::uint64_t>(sum_of(start, std::min(start + chunk, positions)) >> 64);
+    set.first_chunk_rest[c] = sum_of(used, chunk);
     set.tail[c] = tail;
     set.positions[c] = used;
   }
