@@ -1,7 +1,5 @@
 #include "stratum/render/compare.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -11,6 +9,7 @@
 #include <limits>
 #include <map>
 
+#include "image_plugin.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -155,19 +154,13 @@ double relative_mean_squared_error(const Image& image, const Image& reference) {
 }
 
 Image read_image(const std::string& path) {
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) throw invalid_argument("image", path, "must be a readable image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
-  require(spec.nchannels >= 3, "image", path, "must have 3 channels");
-  std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw invalid_argument("image", path, "could not be read: " + input->geterror());
+  const image_plugin::Pixels pixels = image_plugin::read(path, "image");
   Image image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.rgb.resize(std::size_t(spec.width) * spec.height * 3);
-  for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p)
-    for (int c = 0; c < 3; ++c) image.rgb[3 * p + c] = pixels[p * spec.nchannels + c];
+  image.width = pixels.width;
+  image.height = pixels.height;
+  image.rgb.resize(std::size_t(pixels.width) * pixels.height * 3);
+  for (std::size_t p = 0; p < std::size_t(pixels.width) * pixels.height; ++p)
+    for (int c = 0; c < 3; ++c) image.rgb[3 * p + c] = pixels.values[p * pixels.channels + c];
   return image;
 }
 

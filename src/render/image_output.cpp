@@ -1,5 +1,5 @@
-/// Images through OpenImageIO: linear EXR, or 8-bit sRGB for other formats.
-#include <OpenImageIO/imageio.h>
+/// Images through OpenImageIO (loaded on first use: image_plugin.hpp):
+/// linear EXR, or 8-bit sRGB for other formats.
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 
+#include "image_plugin.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
@@ -31,10 +33,9 @@ void write_image(const Image& image, const std::string& path) {
   const fs::path target(path);
   std::string extension = target.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-  auto output = OIIO::ImageOutput::create(path);
-  if (!output) throw invalid_argument("output", path, "must end in an image format OpenImageIO writes (.exr, .png, ...)");
+  if (!image_plugin::writable(path))
+    throw invalid_argument("output", path, "must end in an image format OpenImageIO writes (.exr, .png, ...)");
   const bool linear = extension == ".exr" || extension == ".hdr";
-  OIIO::ImageSpec spec(image.width, image.height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   std::vector<float> floats;
   std::vector<unsigned char> bytes;
   if (linear) {
@@ -51,14 +52,12 @@ void write_image(const Image& image, const std::string& path) {
   if (fd < 0) throw invalid_argument("output", path, std::string("must be writable (") + std::strerror(errno) + ")");
   fchmod(fd, 0644);  // mkstemps makes it private (0600); an image is for everyone to read
   close(fd);
-  const bool ok = output->open(pattern, spec) &&
-                  (linear ? output->write_image(OIIO::TypeDesc::FLOAT, floats.data())
-                          : output->write_image(OIIO::TypeDesc::UINT8, bytes.data())) &&
-                  output->close();
-  if (!ok) {
-    const std::string error = output->geterror();
+  try {
+    if (linear) image_plugin::write(pattern, image.width, image.height, floats.data());
+    else image_plugin::write(pattern, image.width, image.height, bytes.data());
+  } catch (const std::runtime_error& e) {
     std::remove(pattern.c_str());
-    throw invalid_argument("output", path, "could not be written: " + error);
+    throw invalid_argument("output", path, std::string("could not be written: ") + e.what());
   }
   fs::rename(pattern, target);
 }
