@@ -20,8 +20,9 @@ cmake --install build/release --prefix build/install >/dev/null
 cmake -S examples/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
 cmake --build build/consumer >/dev/null
 build/consumer/consumer
-echo "== the installed CLI loads the installed OpenImageIO module"
-LD_DEBUG=files build/install/bin/stratum render --width 8 --height 8 --spp 1 -q -o build/install/check.png 2>build/install/ld.log
+echo "== the installed CLI, run through PATH from another folder, loads the installed OpenImageIO module"
+(cd / && PATH="$OLDPWD/build/install/bin:$PATH" LD_DEBUG=files \
+  stratum render --width 8 --height 8 --spp 1 -q -o "$OLDPWD/build/install/check.png") 2>build/install/ld.log
 grep -q "file=$PWD/build/install/lib.*/stratum/libstratum_oiio.so" build/install/ld.log
 [ -s build/install/check.png ]
 

@@ -34,6 +34,8 @@ void run_render(RenderOptions& options) {
   render::validate_settings(options.settings);
   require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",
           options.reference_spp, "must be in [1, 2^24]");
+  render::check_image_path("output", options.output);  // before the render, not after it
+  if (!options.exr.empty()) render::check_image_path("exr", options.exr);
   if (!options.variance.empty()) render::check_variance_path("variance", options.variance);
   std::vector<std::string> warnings;
   render::Scene scene = options.scene.empty() ? render::cornell_box() : render::load_scene(options.scene, &warnings);

@@ -33,8 +33,7 @@ void write_image(const Image& image, const std::string& path) {
   const fs::path target(path);
   std::string extension = target.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (!image_plugin::writable(path))
-    throw invalid_argument("output", path, "must end in an image format OpenImageIO writes (.exr, .png, ...)");
+  check_image_path("output", path);
   const bool linear = extension == ".exr" || extension == ".hdr";
   std::vector<float> floats;
   std::vector<unsigned char> bytes;
@@ -47,7 +46,9 @@ void write_image(const Image& image, const std::string& path) {
   // A temporary file with the same extension (OpenImageIO picks the format
   // by it), renamed onto `path` only when complete.
   const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string pattern = (directory / ("." + target.stem().string() + ".XXXXXX" + extension)).string();
+  std::string name = ".";  // appended, not a chain of +: GCC 12's -Wrestrict misfires on that chain
+  name.append(target.stem().string()).append(".XXXXXX").append(extension);
+  std::string pattern = (directory / name).string();
   const int fd = mkstemps(pattern.data(), static_cast<int>(extension.size()));
   if (fd < 0) throw invalid_argument("output", path, std::string("must be writable (") + std::strerror(errno) + ")");
   fchmod(fd, 0644);  // mkstemps makes it private (0600); an image is for everyone to read
@@ -60,6 +61,20 @@ void write_image(const Image& image, const std::string& path) {
     throw invalid_argument("output", path, std::string("could not be written: ") + e.what());
   }
   fs::rename(pattern, target);
+}
+
+void check_image_path(const std::string& argument, const std::string& path) {
+  bool known = false;
+  try {
+    known = image_plugin::writable(path);
+  } catch (const std::runtime_error& e) {  // the module did not load
+    throw invalid_argument(argument, path, std::string("cannot be written: ") + e.what());
+  }
+  if (!known) throw invalid_argument(argument, path, "must end in an image format OpenImageIO writes (.exr, .png, ...)");
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw invalid_argument(argument, path, std::string("must be writable (") + std::strerror(errno) + ")");
 }
 
 void check_variance_path(const std::string& argument, const std::string& path) {

@@ -1,8 +1,10 @@
 #include "image_plugin.hpp"
 
 #include <dlfcn.h>
+#include <link.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
@@ -27,28 +29,61 @@ struct Module {
   Read read = nullptr;
 };
 
-/// Candidates in order: the environment's; the one beside the program (or
-/// library) that contains this code, where `cmake --install` puts it and
-/// where the build tree mirrors that layout (so a moved install tree works);
-/// at the configured install prefix; the build tree's (for programs outside
-/// bin/, such as the Python module).
+/// Whether `address` lies in the main program (glibc's dl_iterate_phdr visits
+/// it first) rather than in a shared library such as the Python module.
+bool in_main_program(const void* address) {
+  struct Query {
+    std::uintptr_t address;
+    bool inside;
+  } query{reinterpret_cast<std::uintptr_t>(address), false};
+  dl_iterate_phdr(
+      [](dl_phdr_info* object, std::size_t, void* data) {
+        auto& q = *static_cast<Query*>(data);
+        for (int i = 0; i < object->dlpi_phnum; ++i) {
+          const ElfW(Phdr)& segment = object->dlpi_phdr[i];
+          const std::uintptr_t begin = object->dlpi_addr + segment.p_vaddr;
+          if (segment.p_type == PT_LOAD && q.address >= begin && q.address < begin + segment.p_memsz) q.inside = true;
+        }
+        return 1;  // stop after the first object, the main program
+      },
+      &query);
+  return query.inside;
+}
+
+/// The file of the program or shared library that holds this code, with
+/// symlinks resolved; empty if unknown. For the main program dladdr gives
+/// argv[0] as typed (a bare name when run through PATH), so that one is
+/// read from /proc/self/exe instead.
+std::filesystem::path own_file() {
+  Dl_info info{};
+  if (!dladdr(reinterpret_cast<void*>(&own_file), &info) || !info.dli_fname) return {};
+  std::error_code error;
+  const std::filesystem::path file =
+      in_main_program(reinterpret_cast<void*>(&own_file)) ? std::filesystem::path("/proc/self/exe") : info.dli_fname;
+  std::filesystem::path resolved = std::filesystem::canonical(file, error);
+  return error ? std::filesystem::path() : resolved;
+}
+
+/// Candidates in order: the environment's; the one in the tree of the
+/// program (or library) that holds this code, where `cmake --install` puts
+/// it and where the build tree mirrors that layout (so a moved install tree
+/// works); the build tree's (for the Python module, outside bin/); the one at
+/// the configured install prefix.
 std::vector<std::string> candidates() {
   std::vector<std::string> paths;
   if (const char* given = std::getenv("STRATUM_OIIO_PLUGIN"); given && *given) paths.emplace_back(given);
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&candidates), &info) && info.dli_fname) {
-    const std::filesystem::path self = std::filesystem::absolute(info.dli_fname).parent_path();
-    paths.push_back((self / STRATUM_OIIO_PLUGIN_FROM_BINDIR).lexically_normal().string());
-  }
-  paths.emplace_back(STRATUM_OIIO_PLUGIN_INSTALLED_PATH);
+  if (const std::filesystem::path self = own_file(); !self.empty())
+    paths.push_back((self.parent_path() / STRATUM_OIIO_PLUGIN_FROM_BINDIR).lexically_normal().string());
   paths.emplace_back(STRATUM_OIIO_PLUGIN_BUILD_PATH);
+  paths.emplace_back(STRATUM_OIIO_PLUGIN_INSTALLED_PATH);
   return paths;
 }
 
 Module load(const std::vector<std::string>& paths) {
   std::string tried;
   for (const std::string& path : paths) {
-    if (!std::filesystem::exists(path)) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {  // an unreadable folder counts as absent too
       tried += "\n  " + path + " (absent)";
       continue;
     }
@@ -95,6 +130,12 @@ void write(const std::string& path, int width, int height, const unsigned char* 
 }
 
 Pixels read(const std::string& path, const std::string& argument) {
+  const Module* loaded = nullptr;
+  try {
+    loaded = &module();
+  } catch (const std::runtime_error& e) {
+    throw invalid_argument(argument, path, std::string("cannot be read: ") + e.what());
+  }
   Pixels pixels;
   const Allocate allocate = [](void* context, int width, int height, int channels) -> float* {
     auto& p = *static_cast<Pixels*>(context);
@@ -104,15 +145,17 @@ Pixels read(const std::string& path, const std::string& argument) {
     return p.values.data();
   };
   char error[1024] = "";
-  switch (module().read(path.c_str(), &pixels, allocate, error, sizeof error)) {
+  switch (loaded->read(path.c_str(), &pixels, allocate, error, sizeof error)) {
     case 0: return pixels;
     case 1: throw invalid_argument(argument, path, std::string("must be a readable image: ") + error);
-    case 2: throw invalid_argument(argument, path, "must have 3 channels");
+    case 2: throw invalid_argument(argument, path, std::string("must be a 2D image with 3 or more channels: ") + error);
     default: throw invalid_argument(argument, path, std::string("could not be read: ") + error);
   }
 }
 
 std::string module_path() { return module().path; }
+
+std::vector<std::string> candidate_paths() { return candidates(); }
 
 std::string load_first(const std::vector<std::string>& paths) { return load(paths).path; }
 

@@ -2,7 +2,7 @@
 // Image files through OpenImageIO, loaded on first use (see
 // oiio_plugin/oiio_plugin.cpp for why): the module is looked for at
 // $STRATUM_OIIO_PLUGIN, then at <program's directory>/../<libdir>/stratum/
-// (installed or in the build tree), the install prefix, the build tree.
+// (installed or in the build tree), in the build tree, at the install prefix.
 #include <string>
 #include <vector>
 
@@ -25,6 +25,8 @@ Pixels read(const std::string& path, const std::string& argument);
 
 /// Where the module was loaded from (loads it; for tests and messages).
 std::string module_path();
+/// Where the module is looked for, in order (what module_path() tries).
+std::vector<std::string> candidate_paths();
 /// Loads the first of `paths` that is stratum's module of this interface
 /// version and returns its path; else throws std::runtime_error naming each
 /// path and why it was passed over. (What module() does with its candidates.)

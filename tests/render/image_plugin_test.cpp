@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -48,10 +49,17 @@ std::string message_of(const std::vector<std::string>& paths) {
 
 }  // namespace
 
-TEST(ImagePlugin, LoadsStratumsModule) {
+TEST(ImagePlugin, LoadsThisBuildsModuleFoundFromTheProgramsOwnPath) {
+  if (std::getenv("STRATUM_OIIO_PLUGIN")) GTEST_SKIP() << "STRATUM_OIIO_PLUGIN is set: that module comes first";
   const std::string path = stratum::render::image_plugin::module_path();
-  EXPECT_TRUE(fs::exists(path)) << path;
-  EXPECT_EQ(fs::path(path).filename(), "libstratum_oiio.so");
+  EXPECT_TRUE(fs::equivalent(path, STRATUM_OIIO_PLUGIN_BUILD_PATH)) << path;
+  // The first candidate comes from /proc/self/exe (this test program, in
+  // build/<preset>/bin/), not from argv[0], and is this build's module.
+  const std::vector<std::string> candidates = stratum::render::image_plugin::candidate_paths();
+  ASSERT_GE(candidates.size(), 3u);
+  EXPECT_TRUE(fs::path(candidates[0]).is_absolute()) << candidates[0];
+  EXPECT_EQ(path, candidates[0]);
+  EXPECT_TRUE(fs::equivalent(candidates[0], STRATUM_OIIO_PLUGIN_BUILD_PATH)) << candidates[0];
 }
 
 TEST(ImagePlugin, PassesOverAbsentAndForeignFilesAndSaysWhy) {
@@ -106,4 +114,38 @@ TEST(ImagePlugin, RefusesUnknownFormatsAndUnreadableFilesWithoutLeavingFiles) {
   const fs::path text = scratch("text.exr");
   std::ofstream(text) << "not an image\n";
   EXPECT_THROW(stratum::render::read_image(text.string()), stratum::invalid_argument);
+}
+
+TEST(ImagePlugin, AFailedWriteRemovesItsTemporaryFile) {
+  // An empty image passes the path checks, then OpenImageIO refuses it
+  // after the temporary file exists: write_image must remove that file.
+  Image empty;
+  const fs::path target = scratch("empty-dir") / "empty.png";
+  fs::create_directories(target.parent_path());
+  try {
+    stratum::render::write_image(empty, target.string());
+    ADD_FAILURE() << "an empty image was written";
+  } catch (const stratum::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("output"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_empty(target.parent_path()));
+}
+
+TEST(ImagePlugin, CheckImagePathNamesTheArgumentBeforeAnyWork) {
+  const auto message = [](const std::string& path) -> std::string {
+    try {
+      stratum::render::check_image_path("exr", path);
+    } catch (const stratum::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(message(scratch("fine.exr").string()), "");
+  EXPECT_EQ(message(scratch("fine.png").string()), "");
+  const std::string unknown = message(scratch("x.notaformat").string());
+  EXPECT_NE(unknown.find("exr"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("image format"), std::string::npos) << unknown;
+  const std::string no_folder = message(scratch("no/such/folder/x.png").string());
+  EXPECT_NE(no_folder.find("must be writable"), std::string::npos) << no_folder;
+  EXPECT_FALSE(fs::exists(scratch("fine.exr")));
 }

@@ -61,5 +61,9 @@ Image render(const Accelerator& accelerator, const RenderSettings& settings,
 /// image (.png, .jpg, …: exposure 1, clamp, sRGB curve) through
 /// OpenImageIO, into a temporary file renamed on success.
 void write_image(const Image& image, const std::string& path);
+/// Checks, before any work, that write_image can write `path`: OpenImageIO's
+/// module loads, it writes that extension, and the folder takes new files;
+/// else stratum::invalid_argument naming `argument`.
+void check_image_path(const std::string& argument, const std::string& path);
 
 }  // namespace stratum::render

@@ -51,12 +51,15 @@ int stratum_oiio_write(const char* path, int width, int height, int as_float, co
 } catch (const std::exception& e) {  // no exception crosses the C interface
   copy_error(e.what(), error, error_size);
   return 2;
+} catch (...) {
+  copy_error("unknown exception", error, error_size);
+  return 2;
 }
 
 /// Reads the image at `path` as float: `allocate(context, width, height,
 /// channels)` returns room for width·height·channels floats (or null to
-/// refuse the image). 0: read; 1: not readable; 2: refused; 3: read failed;
-/// messages in `error`.
+/// refuse the image). 0: read; 1: not readable; 2: refused (a volume, or by
+/// allocate); 3: read failed; messages in `error`.
 int stratum_oiio_read(const char* path, void* context, float* (*allocate)(void*, int, int, int), char* error,
                       std::size_t error_size) try {
   auto input = OIIO::ImageInput::open(path);
@@ -65,13 +68,25 @@ int stratum_oiio_read(const char* path, void* context, float* (*allocate)(void*,
     return 1;
   }
   const OIIO::ImageSpec& spec = input->spec();
+  const std::string shape = std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
+                            std::to_string(spec.depth) + " pixels, " + std::to_string(spec.nchannels) + " channels";
+  if (spec.depth != 1) {  // a volume: width·height·depth values would not fit what allocate gives
+    copy_error("it has " + shape, error, error_size);
+    return 2;
+  }
   float* pixels = allocate(context, spec.width, spec.height, spec.nchannels);
-  if (!pixels) return 2;
+  if (!pixels) {
+    copy_error("it has " + shape, error, error_size);
+    return 2;
+  }
   if (input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels)) return 0;
   copy_error(input->geterror(), error, error_size);
   return 3;
 } catch (const std::exception& e) {
   copy_error(e.what(), error, error_size);
+  return 3;
+} catch (...) {
+  copy_error("unknown exception", error, error_size);
   return 3;
 }
 
