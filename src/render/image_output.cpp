@@ -26,13 +26,19 @@ double srgb(double linear) {
   return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
 }
 
+/// The file name's extension in lower case (".EXR" -> ".exr").
+std::string lowercase_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
 }  // namespace
 
 void write_image(const Image& image, const std::string& path) {
   namespace fs = std::filesystem;
   const fs::path target(path);
-  std::string extension = target.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string extension = lowercase_extension(path);
   check_image_path("output", path);
   const bool linear = extension == ".exr" || extension == ".hdr";
   std::vector<float> floats;
@@ -78,8 +84,7 @@ void check_image_path(const std::string& argument, const std::string& path) {
 }
 
 void check_variance_path(const std::string& argument, const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string extension = lowercase_extension(path);
   require(extension == ".exr", argument, path, "must be an OpenEXR file (.exr): variances are linear, unbounded values");
 }
 
