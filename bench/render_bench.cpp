@@ -19,7 +19,7 @@
 // dimension and per shadow-ray array; the same points as the registry).
 //
 // Not in bench/*_bench.cpp (the glob of stratum_bench) because stratum_bench
-// does not link stratum_render and Embree; see /work/helpers/notes/render.md.
+// does not link stratum_render and Embree.
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 #include <oneapi/tbb/global_control.h>

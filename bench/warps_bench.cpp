@@ -2,8 +2,7 @@
 // call (warp.sample over n rows, no input checks) and, for the basic warps,
 // through the core headers directly; against a copy of the input array of the
 // same size (a memory-bandwidth baseline) in the same run. The ratio to the
-// baseline is computed from the JSON output (see /work/helpers/bench/warps-a.md
-// for the command).
+// baseline is computed from the JSON output (the command is in BENCHMARKS.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

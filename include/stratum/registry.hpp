@@ -1,8 +1,11 @@
 #pragma once
-/// The one registry of stratum: every sampler with its name, description,
+/// The registry of samplers: every sampler with its name, description,
 /// dimensions, properties, accepted randomizers and parameters. The CLI, the
 /// Python package, the tests and the benchmarks all iterate over it; adding a
-/// sampler is one entry in one of src/registry/samplers_*.cpp.
+/// sampler is one entry in the fitting family file src/registry/samplers_*.cpp
+/// (the families are listed in src/registry/families.hpp). Warps, measures and
+/// integrands have lists of their own (warp_registry.hpp, analysis/measures.hpp,
+/// analysis/integrands.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,4 @@
-/// The studies part of the compiled module. Two sections, one per helper:
+/// The studies part of the compiled module, in two sections:
 /// integrands/integrate/converge first, then the dimension and importance
 /// studies. Each section binds its functions from its own bind_* function.
 #include <limits>
@@ -19,7 +19,7 @@ namespace py = pybind11;
 namespace stratum::python {
 
 // ============================================================================
-// Section: integrands(), integrate(), converge() — owner: helper "estimators"
+// Section: integrands(), integrate(), converge()
 // ============================================================================
 namespace {
 namespace sa = stratum::analysis;
@@ -123,8 +123,7 @@ void bind_integrate_converge(py::module_& m) {
 }  // namespace
 
 // ============================================================================
-// Section: study_dimension(), study_importance() — owner: helper "studies"
-// (append its bind function above this line's namespace end and call it below)
+// Section: study_dimension(), study_importance()
 // ============================================================================
 namespace {
 namespace sa = stratum::analysis;

@@ -18,7 +18,7 @@ from ._stratum import InvalidArgument
 __all__ = ["integrands", "integrate", "converge"]
 
 # ============================================================================
-# Section: integrands(), integrate(), converge() — owner: helper "estimators"
+# Section: integrands(), integrate(), converge()
 # ============================================================================
 
 
@@ -123,7 +123,7 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
 
 
 # ============================================================================
-# Section: study_dimension(), study_importance() — owner: helper "studies"
+# Section: study_dimension(), study_importance()
 # (append below; extend __all__ with `__all__ += [...]`)
 # ============================================================================
 

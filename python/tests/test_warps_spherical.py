@@ -1,5 +1,5 @@
 """stratum.warp / warp_pdf / warp_invert for the spherical-polygon and
-tabulated warps (warps-b), against independent oracles: the Van Oosterom–
+tabulated warps, against independent oracles: the Van Oosterom–
 Strackee solid angle, Lambert's projected-solid-angle formula, and
 scipy.stats.rv_histogram for the tabulated densities. Statistical checks use
 fixed seeds; their levels are stated where they are made."""

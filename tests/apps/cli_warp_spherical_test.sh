@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# CLI tests of `stratum warp` for the spherical-polygon and tabulated warps
-# (warps-b): correct output on small cases with closed forms, and the
+# CLI tests of `stratum warp` for the spherical-polygon and tabulated warps:
+# correct output on small cases with closed forms, and the
 # bad-input contract of issue 3 §6 (message naming the parameter, its value
 # and what is allowed; non-zero exit; no partial output file).
 set -u

@@ -1,4 +1,4 @@
-// Generic tests over every registry warp (both warp helpers' entries and any
+// Generic tests over every registry warp (every entry, including any
 // added later): each is built with its defaults, plus a few extra
 // configurations, and checked through the registry's array calls.
 #include "stratum/warp_registry.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // χ² goodness-of-fit of a warp against its density, shared by the warp tests
-// (warps-a and warps-b), after Mitsuba 3's `chi2` test and Nori's warptest.
+// (tests/warps and tests/registry), after Mitsuba 3's `chi2` test and Nori's warptest.
 //
 // API
 //   using SampleFn = std::function<void(const double* u, double* out)>;  // u: input_dim numbers in [0,1)
@@ -131,7 +131,7 @@ struct Chi2Result {
 };
 
 /// T, the number of χ² tests in the warp suite (tests/warps/*_test.cpp and
-/// tests/registry/warp_*_test.cpp, both helpers), counted generously: each test
+/// tests/registry/warp_*_test.cpp), counted generously: each test
 /// passes when p > sidak_alpha(0.01, chi2_tests_in_suite) ≈ 2.5e-4, so the
 /// whole suite has a false-alarm rate of at most 1% while it holds at most T
 /// χ² tests (a larger T than the true count only makes this conservative).

@@ -17,7 +17,7 @@ namespace stratum::render {
 struct RenderSettings {
   std::string integrator = "direct";      ///< direct | irradiance | path
   std::uint32_t light_samples = 1;        ///< shadow rays per eye-ray hit (M)
-  std::string light_strategy = "area";    ///< area | solid-angle
+  std::string light_strategy = "area";    ///< area | solid-angle | projected-solid-angle | bsdf | mis
   std::string hemisphere = "cosine";      ///< irradiance: uniform | cosine
   std::uint32_t max_depth = 5;            ///< path: longest path (and mirror chains in direct)
   PixelSamplerSettings sampler;           ///< spp = eye rays per pixel
