@@ -18,8 +18,8 @@
 // table-free path (the permutations a set needs, built per pixel and
 // dimension and per shadow-ray array; the same points as the registry).
 //
-// Not in bench/*_bench.cpp (the glob of stratum_bench) because stratum_bench
-// does not link stratum_render and Embree.
+// Part of stratum_bench only when the renderer is built (bench/CMakeLists.txt
+// leaves it out otherwise, since it needs stratum_render and Embree).
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 #include <oneapi/tbb/global_control.h>
