@@ -80,12 +80,20 @@ def test_spectrum_1d_and_bad_input():
 
 
 def test_pair_correlation():
-    # Two points at toroidal distance 0.15: g(r) = 2 k_σ(r − 0.15) / (N(N−1) 2πr).
+    # Two points at toroidal distance 0.15: g(r) = 2 k_σ(r − 0.15) / (N(N−1) D(r)),
+    # D(r) = ∫ k_σ(r − t) 2πt dt over t ≥ 0, |r − t| < 4σ (what white noise puts
+    # under the kernel), here by scipy's quad.
+    from scipy.integrate import quad
+
     x = np.array([[0.1, 0.2], [0.95, 0.2]])
-    r = np.array([0.13, 0.15, 0.17])
-    g = stratum.pair_correlation(x, radii=r, sigma=0.01)
-    kernel = np.exp(-0.5 * ((r - 0.15) / 0.01) ** 2) / (math.sqrt(2 * math.pi) * 0.01)
-    np.testing.assert_allclose(g["g"], 2 * kernel / (2 * 2 * math.pi * r), rtol=1e-12)
+    r = np.array([0.005, 0.13, 0.15, 0.17])
+    sigma = 0.01
+    g = stratum.pair_correlation(x, radii=r, sigma=sigma)
+    kernel = np.exp(-0.5 * ((r - 0.15) / sigma) ** 2) / (math.sqrt(2 * math.pi) * sigma)
+    kernel[np.abs(r - 0.15) >= 4 * sigma] = 0
+    shell = [quad(lambda t: math.exp(-0.5 * ((q - t) / sigma) ** 2) / (math.sqrt(2 * math.pi) * sigma) * 2 * math.pi * t,
+                  max(0, q - 4 * sigma), q + 4 * sigma, epsabs=0, epsrel=1e-13)[0] for q in r]
+    np.testing.assert_allclose(g["g"], 2 * kernel / (2 * np.array(shell)), rtol=1e-9, atol=1e-300)
     # A uniform random set: g ≈ 1 away from r = 0 (see geometry_test.cpp for the tolerance).
     y = np.random.default_rng(2).random((2000, 2))
     h = stratum.pair_correlation(y, radii=[0.03, 0.06, 0.09], sigma=0.002)

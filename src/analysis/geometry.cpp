@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "stratum/patterns/neighbor_grid.hpp"
 #include "stratum/util/error.hpp"
@@ -35,6 +36,35 @@ double unit_ball_volume(std::size_t d) {
 
 /// Area of the unit sphere in d dimensions, d · V_d.
 double unit_sphere_area(std::size_t d) { return static_cast<double>(d) * unit_ball_volume(d); }
+
+/// What a uniform random (binomial) set adds to the kernel sum at radius r, per
+/// ordered pair: ∫ k_σ(r − t) S_{d−1} t^{d−1} dt over the distances t ≥ 0 that
+/// the truncated kernel (|r − t| < 4σ) sees. On the torus with r + 4σ ≤ ½ the
+/// distance of two independent uniform points has density S_{d−1} t^{d−1}, so
+/// dividing by this makes E g(r) = 1 exactly for white noise at every r, where
+/// the shell S_{d−1} r^{d−1} alone overcounts when r is a few σ (the kernel's
+/// mass below t = 0 is lost and t^{d−1} curves under it). With u = (r − t)/σ:
+/// ∫ φ(u) (r − σu)^{d−1} du over [−4, min(4, r/σ)], from the moments
+/// M_k = ∫ u^k φ(u) du of the standard normal on that interval
+/// (M_k = (k−1) M_{k−2} − [u^{k−1} φ(u)]).
+double expected_kernel_shell(double r, double sigma, std::size_t d) {
+  const double a = -4, b = std::min(4.0, r / sigma);
+  const auto density = [](double u) { return std::exp(-0.5 * u * u) / std::sqrt(2 * pi); };
+  const auto power = [](double u, std::size_t k) { return k == 0 ? 1.0 : std::pow(u, static_cast<double>(k)); };
+  std::vector<double> moment(d);
+  for (std::size_t k = 0; k < d; ++k) {
+    if (k == 0) moment[k] = 0.5 * (std::erf(b / std::sqrt(2.0)) - std::erf(a / std::sqrt(2.0)));
+    else if (k == 1) moment[k] = density(a) - density(b);
+    else moment[k] = static_cast<double>(k - 1) * moment[k - 2] - (power(b, k - 1) * density(b) - power(a, k - 1) * density(a));
+  }
+  // (r − σu)^{d−1} = Σ_k C(d−1, k) r^{d−1−k} (−σ)^k u^k
+  double sum = 0, binomial = 1;
+  for (std::size_t k = 0; k < d; ++k) {
+    sum += binomial * power(r, d - 1 - k) * power(-sigma, k) * moment[k];
+    binomial = binomial * static_cast<double>(d - 1 - k) / static_cast<double>(k + 1);
+  }
+  return unit_sphere_area(d) * sum;
+}
 
 NeighborGrid grid_for(const PointView& points, std::uint64_t cells_per_axis, bool periodic) {
   NeighborGrid grid(static_cast<unsigned>(points.d), std::max<std::uint64_t>(1, cells_per_axis), periodic);
@@ -167,8 +197,7 @@ PairCorrelation pair_correlation(const PointView& points, const std::vector<doub
   for (std::size_t k = 0; k < radii.size(); ++k) {
     double sum = 0;
     for (const auto& block_sums : partial) sum += block_sums[k];  // fixed order: deterministic
-    const double shell = unit_sphere_area(points.d) * std::pow(radii[k], static_cast<double>(points.d) - 1.0);
-    result.g.push_back(sum / (n * (n - 1) * shell));
+    result.g.push_back(sum / (n * (n - 1) * expected_kernel_shell(radii[k], sigma, points.d)));
   }
   return result;
 }

@@ -44,11 +44,14 @@ double densest_packing_distance(std::size_t n, std::size_t d);
 double poisson_radius(const PointView& points, bool toroidal);
 
 /// The pair correlation function g(r) at `radii`, estimated as in Öztireli &
-/// Gross (2012, Eq. 4) with a Gaussian kernel k_σ of standard deviation σ:
-///   g(r) = Σ_{i≠j} k_σ(r − |x_i − x_j|) / (N (N−1) · S_{d−1} r^{d−1}),
-/// S_{d−1} r^{d−1} the area of the sphere of radius r (2πr in 2D), distances
-/// toroidal so that no edge correction is needed (valid for r + 4σ ≤ ½).
-/// For a uniform random (binomial) set E g(r) → 1 as σ → 0; blue noise has
+/// Gross (2012, Eq. 4) with a Gaussian kernel k_σ of standard deviation σ,
+/// cut at 4σ, and distances toroidal so that no edge correction is needed
+/// (valid for r + 4σ ≤ ½):
+///   g(r) = Σ_{i≠j} k_σ(r − |x_i − x_j|) / (N (N−1) · ∫_{t≥0} k_σ(r − t) S_{d−1} t^{d−1} dt).
+/// The denominator is what a uniform random (binomial) set gives, so
+/// E g(r) = 1 for white noise at every radius; it tends to the sphere's area
+/// S_{d−1} r^{d−1} (2πr in 2D) of Eq. 4 for r ≫ σ, whose use at r of a few σ
+/// overestimates g (2.15 for white noise at r = σ/4 in 2D). Blue noise has
 /// g ≈ 0 below its Poisson radius. Pairs farther than max(radii) + 4σ are
 /// skipped (a neighbour grid finds the others).
 struct PairCorrelation {
