@@ -1,5 +1,5 @@
-/// Registry entries: rank-1 lattices (fibonacci, lattice) and the Kronecker
-/// sequence (kronecker).
+/// Registry entries: rank-1 lattices (fibonacci, lattice) and the lattice-like
+/// sequences (kronecker, lattice-sequence).
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
@@ -11,6 +11,7 @@
 #include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/sequences/kronecker.hpp"
 #include "stratum/sequences/lattice.hpp"
+#include "stratum/sequences/lattice_sequence.hpp"
 #include "stratum/util/error.hpp"
 #include "support.hpp"
 
@@ -68,6 +69,28 @@ Kronecker kronecker_from(const SamplerRequest& request) {
           "has " + std::to_string(alpha.size()) + " entries; d = " + std::to_string(request.d) + " needs " +
               std::to_string(request.d));
   return Kronecker(alpha, offset);
+}
+
+/// The lattice sequence's generating vector: generator= (d positive
+/// integers) or the default vector's first d components (d <= 32).
+LatticeSequence lattice_sequence_from(const SamplerRequest& request) {
+  const auto generator = param_int_list(request, "generator");
+  if (!generator) {
+    require(request.d <= LatticeSequence::default_generator.size(), "d", request.d,
+            "the default generating vector has 32 components; give generator= (d integers) for more dimensions");
+    return LatticeSequence(request.d);
+  }
+  const std::string text = *param_text(request, "generator");
+  require(generator->size() == request.d, "generator", text,
+          "has " + std::to_string(generator->size()) + " entries; d = " + std::to_string(request.d) + " needs " +
+              std::to_string(request.d));
+  std::vector<std::uint64_t> g;
+  for (std::size_t j = 0; j < generator->size(); ++j) {
+    require((*generator)[j] >= 1, "generator", "entry " + std::to_string(j) + " = " + std::to_string((*generator)[j]),
+            "entries must be positive integers");
+    g.push_back(static_cast<std::uint64_t>((*generator)[j]));
+  }
+  return LatticeSequence(g);
 }
 
 /// An index-addressable sequence from `start`, rotated under cp.
@@ -228,6 +251,25 @@ std::vector<SamplerInfo> lattices() {
       .validate = [](const SamplerRequest& request) { kronecker_from(request); },
       .count = requested_count,
       .generate = [](const SamplerRequest& request) { return fill_sequence(kronecker_from(request), request); },
+  });
+
+  list.push_back({
+      .name = "lattice-sequence",
+      .kind = "sequence",
+      .description = "extensible rank-1 lattice sequence frac(phi_2(i) g) (Hickernell, Hong, L'Ecuyer, Lemieux "
+                     "2000): every 2^m prefix is the lattice frac(k g / 2^m); default g: the first 32 components of "
+                     "Cools, Kuo, Nuyens 2006's lattice-32001-1024-1048576.3600",
+      .min_dim = 1,
+      .max_dim = LatticeSequence::max_dimensions,
+      .properties = {"index-addressable", "progressive", "rank-1 lattice at n = 2^m",
+                     "Latin at n = 2^m in every coordinate with odd g_j (all of the default)"},
+      .randomizers = {"none", "cp"},
+      .counts = "any n >= 1; lattices at n = 2^m (the default vector is built for 2^10 <= n <= 2^20)",
+      .params = {{"generator", "generating vector g: d comma-separated positive integers (default: CKN 2006, d <= 32)",
+                  ""}},
+      .validate = [](const SamplerRequest& request) { lattice_sequence_from(request); },
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_sequence(lattice_sequence_from(request), request); },
   });
 
   return list;
