@@ -54,9 +54,10 @@ def _param_text(name, value) -> str:
     if isinstance(value, (str, numbers.Number)):
         return str(value)
     try:
-        return ",".join(str(int(v)) for v in value)
+        # Integers as integers, other numbers in round-trip form (alpha=[0.3, 0.7]).
+        return ",".join(str(int(v)) if isinstance(v, numbers.Integral) else repr(float(v)) for v in value)
     except TypeError:
-        raise InvalidArgument(f"invalid {name} = {value!r}: must be a number, a string or a list of integers") from None
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be a number, a string or a list of numbers") from None
 
 
 def _positive_int(name, value, allowed):

@@ -1,4 +1,5 @@
-/// Registry entries: rank-1 lattices (fibonacci, lattice).
+/// Registry entries: rank-1 lattices (fibonacci, lattice) and the lattice-like
+/// sequences (kronecker, lattice-sequence).
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
@@ -8,7 +9,9 @@
 
 #include "families.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
+#include "stratum/sequences/kronecker.hpp"
 #include "stratum/sequences/lattice.hpp"
+#include "stratum/sequences/lattice_sequence.hpp"
 #include "stratum/util/error.hpp"
 #include "support.hpp"
 
@@ -22,15 +25,84 @@ namespace {
 /// Korobov search limit: n x d point-coordinates per candidate.
 constexpr std::uint64_t search_limit = std::uint64_t{1} << 26;
 
+/// `text` as a real number, or nullopt when it is not exactly one.
+std::optional<double> parse_real(const std::string& text) {
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || text.empty()) return std::nullopt;
+  return value;
+}
+
 double param_gamma(const SamplerRequest& request) {
   const auto text = param_text(request, "gamma");
   if (!text) return 1.0;
-  double value = 0;
-  const char* end = text->data() + text->size();
-  const auto [ptr, ec] = std::from_chars(text->data(), end, value);
-  if (ec != std::errc() || ptr != end || !(value > 0 && value <= 1))
+  const auto value = parse_real(*text);
+  if (!value || !(*value > 0 && *value <= 1))
     throw invalid_argument("gamma", text->empty() ? "''" : *text, "must be a number in (0, 1]");
-  return value;
+  return *value;
+}
+
+/// Kronecker's offset s (default 0) and α (d reals; absent: R_d), checked by
+/// the header's constructor except for the count and the syntax.
+Kronecker kronecker_from(const SamplerRequest& request) {
+  double offset = 0;
+  if (const auto text = param_text(request, "offset")) {
+    const auto value = parse_real(*text);
+    if (!value) throw invalid_argument("offset", text->empty() ? "''" : *text, "must be a number in [0, 1)");
+    offset = *value;
+  }
+  const auto text = param_text(request, "alpha");
+  if (!text) return Kronecker(request.d, offset);
+  std::vector<double> alpha;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t comma = text->find(',', begin);
+    const std::string item = text->substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    const auto value = parse_real(item);
+    if (!value) throw invalid_argument("alpha", *text, "must be d comma-separated numbers in (0, 1); '" + item + "' is not a number");
+    alpha.push_back(*value);
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
+  }
+  require(alpha.size() == request.d, "alpha", *text,
+          "has " + std::to_string(alpha.size()) + " entries; d = " + std::to_string(request.d) + " needs " +
+              std::to_string(request.d));
+  return Kronecker(alpha, offset);
+}
+
+/// The lattice sequence's generating vector: generator= (d positive
+/// integers) or the default vector's first d components (d <= 32).
+LatticeSequence lattice_sequence_from(const SamplerRequest& request) {
+  const auto generator = param_int_list(request, "generator");
+  if (!generator) {
+    require(request.d <= LatticeSequence::default_generator.size(), "d", request.d,
+            "the default generating vector has 32 components; give generator= (d integers) for more dimensions");
+    return LatticeSequence(request.d);
+  }
+  const std::string text = *param_text(request, "generator");
+  require(generator->size() == request.d, "generator", text,
+          "has " + std::to_string(generator->size()) + " entries; d = " + std::to_string(request.d) + " needs " +
+              std::to_string(request.d));
+  std::vector<std::uint64_t> g;
+  for (std::size_t j = 0; j < generator->size(); ++j) {
+    require((*generator)[j] >= 1, "generator", "entry " + std::to_string(j) + " = " + std::to_string((*generator)[j]),
+            "entries must be positive integers");
+    g.push_back(static_cast<std::uint64_t>((*generator)[j]));
+  }
+  return LatticeSequence(g);
+}
+
+/// An index-addressable sequence from `start`, rotated under cp.
+template <class Sequence>
+PointSet fill_sequence(const Sequence& sequence, const SamplerRequest& request) {
+  const bool rotate = request.randomize == "cp";
+  const CranleyPattersonRotation rotation(request.seed);
+  const std::uint64_t start = request.start;
+  return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
+    const double value = sequence.sample(start + i, j);
+    return rotate ? rotation(value, j) : value;
+  });
 }
 
 /// The generating vector a request asks for, or nullopt when it asks for the
@@ -162,6 +234,42 @@ std::vector<SamplerInfo> lattices() {
             const Rank1Lattice lattice(n, std::span<const std::uint64_t>(z->data(), request.d));
             return fill_lattice(lattice, request);
           },
+  });
+
+  list.push_back({
+      .name = "kronecker",
+      .kind = "sequence",
+      .description = "Kronecker (additive recurrence, Weyl) sequence frac(s + i alpha); by default alpha = R_d, the "
+                     "powers of 1/phi_d, phi_d the root of x^(d+1) = x + 1 (Roberts 2018); exact for every index",
+      .min_dim = 1,
+      .max_dim = Kronecker::max_dimensions,
+      .properties = {"index-addressable", "progressive", "low-discrepancy", "three gap lengths per coordinate"},
+      .randomizers = {"none", "cp"},
+      .counts = "any n >= 1",
+      .params = {{"alpha", "d comma-separated reals in (0, 1), one per dimension (default: R_d of Roberts 2018)", ""},
+                 {"offset", "the offset s in [0, 1) added in every dimension", "0"}},
+      .validate = [](const SamplerRequest& request) { kronecker_from(request); },
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_sequence(kronecker_from(request), request); },
+  });
+
+  list.push_back({
+      .name = "lattice-sequence",
+      .kind = "sequence",
+      .description = "extensible rank-1 lattice sequence frac(phi_2(i) g) (Hickernell, Hong, L'Ecuyer, Lemieux "
+                     "2000): every 2^m prefix is the lattice frac(k g / 2^m); default g: the first 32 components of "
+                     "Cools, Kuo, Nuyens 2006's lattice-32001-1024-1048576.3600",
+      .min_dim = 1,
+      .max_dim = LatticeSequence::max_dimensions,
+      .properties = {"index-addressable", "progressive", "rank-1 lattice at n = 2^m",
+                     "Latin at n = 2^m in every coordinate with odd g_j (all of the default)"},
+      .randomizers = {"none", "cp"},
+      .counts = "any n >= 1; lattices at n = 2^m (the default vector is built for 2^10 <= n <= 2^20)",
+      .params = {{"generator", "generating vector g: d comma-separated positive integers (default: CKN 2006, d <= 32)",
+                  ""}},
+      .validate = [](const SamplerRequest& request) { lattice_sequence_from(request); },
+      .count = requested_count,
+      .generate = [](const SamplerRequest& request) { return fill_sequence(lattice_sequence_from(request), request); },
   });
 
   return list;

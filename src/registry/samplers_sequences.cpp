@@ -12,6 +12,8 @@
 /// others are Halton's coordinates 0..d−2 with the same seed and randomizer
 /// (cp aside), and the elementary intervals survive at N = b^k. Because i/N
 /// is not randomized, only cp makes Hammersley estimates unbiased.
+/// Faure's (0, s)-sequence takes the same randomizers, defaulting to owen:
+/// each acts on the point's digits (the digit word), so nets stay nets.
 #include <algorithm>
 #include <cstdint>
 
@@ -23,6 +25,7 @@
 #include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/randomizers/digital_shift_base_b.hpp"
 #include "stratum/randomizers/owen_base_b.hpp"
+#include "stratum/sequences/faure.hpp"
 #include "stratum/sequences/halton.hpp"
 #include "support.hpp"
 
@@ -128,6 +131,33 @@ static PointSet generate_hammersley(const SamplerRequest& request) {
   return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return hammersley.sample(i, j); });
 }
 
+/// Faure points with the request's randomizer applied to the digit words of
+/// indices start .. start+n−1.
+static PointSet generate_faure(const SamplerRequest& request) {
+  const std::uint64_t n = *request.n, start = request.start;
+  const unsigned d = request.d;
+  const Faure faure(d);
+  const std::vector<std::uint32_t> bases(d, faure.base());
+  // Digit words of indices < b^k are < b^k: the tables' range.
+  unsigned __int128 bound = 1;
+  for (std::uint64_t last = start + n - 1; last != 0; last /= faure.base()) bound *= faure.base();
+  const std::uint64_t max_word = bound > ~std::uint64_t{0} ? ~std::uint64_t{0} : static_cast<std::uint64_t>(bound - 1);
+  const auto scrambled = [&](const auto& scrambler) {
+    return fill_each(n, d, request.threads,
+                     [&](std::uint64_t i, unsigned j) { return scrambler.sample(faure.digit_word(start + i, j), j); });
+  };
+  const std::string& randomize = request.randomize;
+  if (randomize == "owen") return scrambled(BaseBOwenScrambler(request.seed, bases));
+  if (randomize == "permute") return scrambled(RandomDigitPermutations(request.seed, bases, max_word));
+  if (randomize == "xor") return scrambled(BaseBDigitalShift(request.seed, bases, max_word));
+  const CranleyPattersonRotation rotation(request.seed);
+  const bool rotate = randomize == "cp";
+  return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) {
+    const double x = faure.sample(start + i, j);
+    return rotate ? rotation(x, j) : x;
+  });
+}
+
 std::vector<SamplerInfo> sequences() {
   std::vector<SamplerInfo> list;
 
@@ -163,6 +193,23 @@ std::vector<SamplerInfo> sequences() {
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_hammersley,
+  });
+
+  list.push_back({
+      .name = "faure",
+      .kind = "sequence",
+      .description = "Faure's (0,s)-sequence in the smallest prime base b >= s, generator matrices the powers of "
+                     "the Pascal matrix mod b (Faure 1982); by default Owen-scrambled in base b (Owen 1995)",
+      .min_dim = 1,
+      .max_dim = Faure::max_dimensions,
+      .properties = {"index-addressable", "progressive", "low-discrepancy",
+                     "(0,m,s)-net in base b for every block of b^m points (none, owen, permute, xor)"},
+      .randomizers = {"owen", "none", "permute", "xor", "cp"},
+      .counts = "any n >= 1; nets at n = b^m",
+      .params = {},
+      .validate = nullptr,
+      .count = requested_count,
+      .generate = generate_faure,
   });
 
   return list;

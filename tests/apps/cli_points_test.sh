@@ -23,6 +23,21 @@ a=$("$stratum" points --sampler random -n 20000 -d 4 --seed 3 --threads 1 | md5s
 b=$("$stratum" points --sampler random -n 20000 -d 4 --seed 3 --threads 2 | md5sum)
 [ "$a" = "$b" ] && ok || fail "threads change the output"
 
+# kronecker, faure and lattice-sequence: one test each through the CLI.
+k=$("$stratum" points -s kronecker -n 2 -d 2 --randomize none | sed -n 2p)
+[ "$k" = "0.7548776662466927 0.5698402909980532" ] && ok || fail "kronecker point 1 is R_2's alpha, got $k"
+k=$("$stratum" points -s kronecker -n 4 -d 1 -p alpha=0.25 -p offset=0.5 | tr '\n' ' ')
+[ "$k" = "0.5 0.75 0 0.25 " ] && ok || fail "kronecker alpha=0.25 offset=0.5, got $k"
+expect_error "invalid alpha" points -s kronecker -n 4 -d 2 -p alpha=0.5
+expect_error "entry 0" points -s kronecker -n 4 -d 1 -p alpha=1.5
+f=$("$stratum" points -s faure -n 4 -d 3 --randomize none | sed -n 4p)
+[ "$f" = "0.1111111111111111 0.4444444444444444 0.7777777777777778" ] && ok || fail "faure point 3, got $f"
+expect_error "randomize" points -s faure -n 4 -d 3 --randomize lms
+l=$("$stratum" points -s lattice-sequence -n 4 -d 2 --randomize none -p generator=1,3 | tr '\n' ' ')
+[ "$l" = "0 0 0.5 0.5 0.25 0.75 0.75 0.25 " ] && ok || fail "lattice-sequence generator=1,3, got $l"
+expect_error "invalid d = 33" points -s lattice-sequence -n 4 -d 33
+expect_error "invalid generator" points -s lattice-sequence -n 4 -d 2 -p generator=1,0
+
 expect_error "sampler" points --sampler nosuch -n 4
 expect_error "halton" points --sampler nosuch -n 4
 expect_error "invalid n = 0" points --sampler halton -n 0
