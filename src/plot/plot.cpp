@@ -79,6 +79,30 @@ import json, runpy, sys, traceback
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import matplotlib.figure, matplotlib.text
+# Every PNG records the smallest font it drew, in pixels of the image
+# (point size x dpi / 72), as the text chunk "stratum:min-font-px": the report's
+# browser test scales it by the displayed width to check legibility.
+_drawn_sizes = []
+_text_draw = matplotlib.text.Text.draw
+def _recording_draw(self, renderer):
+    if self.get_visible() and self.get_text().strip():
+        _drawn_sizes.append(self.get_fontsize())
+    return _text_draw(self, renderer)
+matplotlib.text.Text.draw = _recording_draw
+_savefig = matplotlib.figure.Figure.savefig
+def _savefig_with_font_size(self, fname, *args, **kwargs):
+    if str(fname).lower().endswith(".png"):
+        dpi = kwargs.get("dpi", "figure")
+        dpi = self.dpi if dpi in (None, "figure") else dpi
+        _drawn_sizes.clear()
+        self.canvas.draw()
+        if _drawn_sizes:
+            metadata = dict(kwargs.pop("metadata", None) or {})
+            metadata["stratum:min-font-px"] = "%.3f" % (min(_drawn_sizes) * dpi / 72)
+            kwargs["metadata"] = metadata
+    return _savefig(self, fname, *args, **kwargs)
+matplotlib.figure.Figure.savefig = _savefig_with_font_size
 failed = 0
 for job in json.load(open(sys.argv[1])):
     sys.argv = [job["script"], job["data"], job["out"]]

@@ -1,9 +1,12 @@
 /// The report page: plain HTML with inline CSS, figures by relative path,
 /// no script and nothing fetched from a network, so it opens from disk.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <cctype>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include "sections.hpp"
 
@@ -27,46 +30,116 @@ std::string escape(const std::string& text) {
 }
 
 constexpr const char* style = R"css(
-body { font-family: sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em; color: #222; line-height: 1.45; }
-h1 { margin-bottom: 0.2em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 2em; }
-.meta, figcaption, .time { color: #666; font-size: 0.9em; }
+:root { --fg: #222; --muted: #666; --bg: #fff; --line: #ccc; --head: #f4f4f4; --code: #f2f2f2; --link: #0645ad; }
+@media (prefers-color-scheme: dark) {
+  :root { --fg: #ddd; --muted: #aaa; --bg: #16181c; --line: #444; --head: #23262c; --code: #2a2d33; --link: #8ab4f8; }
+  figure img { background: #fff; }
+}
+html { background: var(--bg); color: var(--fg); }
+body { font-family: sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em; line-height: 1.45; }
+a { color: var(--link); }
+h1 { margin-bottom: 0.2em; } h2 { border-bottom: 1px solid var(--line); padding-bottom: 0.2em; margin-top: 2em; }
+.meta, figcaption, .time { color: var(--muted); font-size: 0.9em; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; }
-figure { margin: 0; max-width: 100%; } figure img { max-width: 100%; height: auto; border: 1px solid #eee; }
+figure { margin: 0; max-width: 100%; } figure img { max-width: 100%; height: auto; border: 1px solid var(--line); }
+.scroll { overflow-x: auto; max-width: 100%; }
 table { border-collapse: collapse; margin: 1em 0; font-size: 0.92em; }
-th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
-th { background: #f4f4f4; } td:first-child, th:first-child { text-align: left; }
+th, td { border: 1px solid var(--line); padding: 0.25em 0.6em; text-align: right; }
+th { background: var(--head); } td:first-child, th:first-child { text-align: left; }
+td.num { white-space: nowrap; }
 caption { caption-side: top; text-align: left; font-weight: bold; padding-bottom: 0.3em; }
-nav ol { columns: 2; }
+code { background: var(--code); padding: 0 0.25em; border-radius: 3px; font-size: 0.85em; overflow-wrap: anywhere; }
+.try { border-left: 3px solid var(--line); padding-left: 0.6em; }
 )css";
 
+/// Escapes `text` and shows the parts between backticks as <code>.
+std::string markup(const std::string& text) {
+  std::string html;
+  bool in_code = false;
+  std::string part;
+  const auto flush = [&] {
+    html += in_code ? "<code>" + escape(part) + "</code>" : escape(part);
+    part.clear();
+  };
+  for (const char c : text) {
+    if (c == '`') {
+      flush();
+      in_code = !in_code;
+    } else {
+      part += c;
+    }
+  }
+  if (in_code) part = "`" + part;  // an unmatched backtick stays a backtick
+  in_code = false;
+  flush();
+  return html;
+}
+
+/// A cell that holds a measured number (it must not wrap: "5.35e-05").
+bool numeric_cell(const std::string& cell) {
+  if (cell.empty()) return false;
+  const unsigned char c = static_cast<unsigned char>(cell[0]);
+  return std::isdigit(c) || c == '-' || c == '+' || cell.rfind("−", 0) == 0 || cell.rfind("≥", 0) == 0 ||
+         cell.rfind("≤", 0) == 0 || cell.rfind("∞", 0) == 0;
+}
+
 std::string table_html(const Table& table) {
-  std::string html = "<table>\n";
-  if (!table.caption.empty()) html += "<caption>" + escape(table.caption) + "</caption>\n";
+  std::string html = "<div class=\"scroll\"><table>\n";
+  if (!table.caption.empty()) html += "<caption>" + markup(table.caption) + "</caption>\n";
   html += "<tr>";
-  for (const auto& cell : table.header) html += "<th>" + escape(cell) + "</th>";
+  for (const auto& cell : table.header) html += "<th>" + markup(cell) + "</th>";
   html += "</tr>\n";
   for (const auto& row : table.rows) {
     html += "<tr>";
-    for (const auto& cell : row) html += "<td>" + escape(cell) + "</td>";
+    for (const auto& cell : row) html += (numeric_cell(cell) ? "<td class=\"num\">" : "<td>") + markup(cell) + "</td>";
     html += "</tr>\n";
   }
-  return html + "</table>\n";
+  return html + "</table></div>\n";
 }
 
 std::string section_html(const Section& section) {
   std::string html = fmt::format("<section id=\"{}\">\n<h2>{} {}</h2>\n", escape(section.id), escape(section.lecture),
                                  escape(section.title));
-  for (const auto& paragraph : section.text) html += "<p>" + escape(paragraph) + "</p>\n";
+  for (const auto& paragraph : section.text) html += "<p>" + markup(paragraph) + "</p>\n";
   if (!section.figures.empty()) {
     html += "<div class=\"figures\">\n";
     for (const auto& figure : section.figures)
-      html += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
-                          escape(figure.file), escape(figure.caption), escape(figure.caption));
+      html += fmt::format(
+          "<figure><a href=\"{0}\" title=\"full-size image\"><img src=\"{0}\" alt=\"{1}\"></a>"
+          "<figcaption>{2}</figcaption></figure>\n",
+          escape(figure.file), escape(figure.caption), markup(figure.caption));
     html += "</div>\n";
   }
   for (const auto& table : section.tables) html += table_html(table);
-  html += fmt::format("<p class=\"time\">Computed in {:.1f} s.</p>\n</section>\n", section.seconds);
+  if (!section.try_it.empty()) {
+    html += "<p class=\"try\">Try it with other samplers: ";
+    for (std::size_t i = 0; i < section.try_it.size(); ++i)
+      html += (i ? "; " : "") + std::string("<code>") + escape(section.try_it[i]) + "</code>";
+    html += "</p>\n";
+  }
+  html += fmt::format(
+      "<p class=\"try\">This section alone, with an extra sampler: <code>stratum report --only {0} --sampler "
+      "halton:owen</code>; in Python <code>stratum.report(\"out\", only=[\"{0}\"], samplers=[\"halton:owen\"])</code>.</p>\n",
+      escape(section.id));
+  html += fmt::format("<p class=\"time\">Computed in {}.</p>\n</section>\n", escape(format_seconds(section.seconds)));
   return html;
+}
+
+/// The lecture's topics, each with the sections that reproduce it.
+std::string index_html(const std::vector<Section>& sections) {
+  std::string html = "<nav><div class=\"scroll\"><table>\n<caption>The lecture, topic by topic, and where each "
+                     "is reproduced</caption>\n<tr><th>lecture</th><th>topic</th><th>section</th></tr>\n";
+  for (const auto& topic : lecture_topics()) {
+    std::string links;
+    for (const auto& section : sections)
+      if (section.lecture == topic.lecture)
+        links += fmt::format("{}<a href=\"#{}\">{}</a>", links.empty() ? "" : "<br>", escape(section.id),
+                             escape(section.title));
+    if (links.empty()) links = "(not run: see <code>--only</code>)";
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", escape(topic.lecture), escape(topic.title),
+                        links);
+  }
+  return html + "</table></div></nav>\n";
 }
 
 }  // namespace
@@ -82,21 +155,31 @@ std::string format_number(double value, int digits) {
 }
 
 std::string report_html(const std::vector<Section>& sections, const ReportOptions& options, double seconds) {
-  std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+                     "<meta name=\"color-scheme\" content=\"light dark\">\n";
   html += "<title>stratum: the lecture on sampling, reproduced</title>\n<style>" + std::string(style) + "</style>\n";
   html += "</head>\n<body>\n<h1>Sampling and Monte Carlo integration, reproduced</h1>\n";
+#ifndef STRATUM_VERSION_TEXT
+#define STRATUM_VERSION_TEXT "unknown"
+#endif
+#if defined(__clang__)
+  const std::string compiler = fmt::format("Clang {}.{}", __clang_major__, __clang_minor__);
+#elif defined(__GNUC__)
+  const std::string compiler = fmt::format("GCC {}.{}", __GNUC__, __GNUC_MINOR__);
+#else
+  const std::string compiler = "an unknown compiler";
+#endif
   html += fmt::format(
-      "<p class=\"meta\">Every figure and number below was computed by stratum on this machine in {:.0f} s "
-      "({} run, seed {}{}). Regenerate with <code>stratum report{}</code>; the measurements are also in "
-      "<a href=\"report.json\">report.json</a>.</p>\n",
-      seconds, options.quick ? "quick" : "full", options.seed,
+      "<p class=\"meta\">Every figure and number below was computed by stratum {} (built with {}) on this machine "
+      "({}, {} used) in {} ({} run, seed {}{}). Regenerate with <code>stratum report{}</code>; the "
+      "measurements are also in <a href=\"report.json\">report.json</a>.</p>\n",
+      STRATUM_VERSION_TEXT, escape(compiler), counted(std::max(1u, std::thread::hardware_concurrency()), "core"),
+      counted(options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency()), "thread"),
+      escape(format_seconds(seconds)), options.quick ? "quick" : "full", options.seed,
       options.extra_samplers.empty() ? "" : ", extra samplers " + escape(fmt::format("{}", fmt::join(options.extra_samplers, ", "))),
       options.quick ? " --quick" : "");
-  html += "<nav><ol>\n";
-  for (const auto& section : sections)
-    html += fmt::format("<li><a href=\"#{}\">{} {}</a></li>\n", escape(section.id), escape(section.lecture),
-                        escape(section.title));
-  html += "</ol></nav>\n";
+  html += index_html(sections);
   for (const auto& section : sections) html += section_html(section);
   return html + "</body>\n</html>\n";
 }

@@ -205,11 +205,11 @@ Section block_designs_section(SectionContext& context) {
   const auto& multi = numbers["multi-jittered"];
   const auto cells_text = [](const nlohmann::json& p) {
     const auto low = p["cell_min"].get<std::size_t>(), high = p["cell_max"].get<std::size_t>();
-    return low == high ? std::to_string(low) : fmt::format("{} to {}", low, high);
+    return low == high ? counted(low, "point") : fmt::format("{} to {} points", low, high);
   };
   section.text.push_back(fmt::format(
       "N-queens has {} pairs of points on a shared diagonal of the N×N grid (N-rooks {}); multi-jittered points "
-      "{} Latin and hold {} points per cell of the {}×{} grid (N-rooks: {}).",
+      "{} Latin and hold {} per cell of the {}×{} grid (N-rooks: {}).",
       queens["diagonal_pairs"].get<std::size_t>(), rooks["diagonal_pairs"].get<std::size_t>(),
       multi["latin"].get<bool>() ? "are" : "are not", cells_text(multi), table_side, table_side, cells_text(rooks)));
 
@@ -222,6 +222,7 @@ Section block_designs_section(SectionContext& context) {
   }
   section.tables.push_back(std::move(square_table));
   section.tables.push_back(std::move(table));
+  section.try_it = {"stratum discrepancy -m latin -s n-rooks -n 16", "stratum points -s multi-jittered -n 16"};
   return section;
 }
 

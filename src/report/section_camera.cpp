@@ -49,14 +49,14 @@ Section camera_section(SectionContext& context) {
 
   const auto& camera = lens_scene.camera;
   nlohmann::json panels = nlohmann::json::array();
-  panels.push_back(image_panel(lens.image, fmt::format("thin lens (radius {}), moving sphere", format_number(camera.aperture_radius))));
+  panels.push_back(image_panel(lens.image, fmt::format("thin lens (aperture radius {} mm), moving sphere", format_number(camera.aperture_radius))));
   panels.push_back(image_panel(pinhole.image, "pinhole, nothing moving"));
   section.figures.push_back(image_figure(
       context, panels, "renders",
-      fmt::format("The Cornell box, {}×{} pixels, {} samples per pixel of ({} sampler): left, the default scene (lens "
+      fmt::format("The Cornell box, {}×{} pixels, {} samples per pixel ({} sampler `{}`): left, the default scene (lens "
                   "focused at {} mm, sphere moving by {} mm while the shutter is open); right, the same box through a "
                   "pinhole with the sphere held still",
-                  size, size, settings.sampler.spp, settings.sampler.sampler, format_number(camera.focus_distance),
+                  size, size, settings.sampler.spp, sampler_name(settings.sampler.sampler, ""), settings.sampler.sampler, format_number(camera.focus_distance),
                   format_number(length(motion))),
       2));
 
@@ -82,10 +82,11 @@ Section camera_section(SectionContext& context) {
       "shutter time: every eye ray takes a film position, a lens position and a time, so that one Monte Carlo "
       "estimate gives antialiasing, depth of field and motion blur together.");
   section.text.push_back(fmt::format(
-      "Path traced with {} samples per pixel at {}×{} on {} thread(s), the default scene took {} s ({} eye rays per "
-      "second) and the pinhole, static box {} s ({} eye rays per second).",
-      settings.sampler.spp, size, size, settings.threads, format_number(lens.image.seconds),
-      format_number(lens.rays_per_second), format_number(pinhole.image.seconds), format_number(pinhole.rays_per_second)));
+      "Path traced with {} samples per pixel at {}×{} on {}, the default scene took {} ({} eye rays per "
+      "second) and the pinhole, static box {} ({} eye rays per second).",
+      settings.sampler.spp, size, size, counted(settings.threads, "thread"), format_seconds(lens.image.seconds),
+      format_number(lens.rays_per_second), format_seconds(pinhole.image.seconds), format_number(pinhole.rays_per_second)));
+  section.try_it = {"stratum render --spp 16 --sampler sobol --randomize owen --width 128 --height 128 -o box.png"};
   return section;
 }
 

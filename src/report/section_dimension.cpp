@@ -116,6 +116,7 @@ Section dimension_section(SectionContext& context) {
                   "Owen-scrambled Sobol' RMSE; fitted slopes in the legends",
                   first.d, last.d, study.rule)));
   section.tables.push_back(std::move(table));
+  section.try_it = {"stratum study dimension --plot dimension.png"};
   return section;
 }
 

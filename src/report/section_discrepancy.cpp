@@ -84,7 +84,7 @@ nlohmann::json field_panel(const sa::SamplerChoice& choice, const PointSet& poin
   for (std::size_t i = 0; i < points.n; ++i) x[i] = points(i, 0), y[i] = points(i, 1);
   numbers = {{"n", points.n}, {"star", box.value}, {"box_x", box.x}, {"box_y", box.y}, {"closed", box.closed},
              {"count", box.count}, {"grid_max_abs", grid.max_abs}};
-  return {{"title", fmt::format("{} (N = {}): D* = {}", choice_label(choice), points.n, format_number(box.value))},
+  return {{"title", fmt::format("{}, N = {}: D* = {}", capitalized(sampler_name(choice)), points.n, format_number(box.value))},
           {"resolution", grid.resolution}, {"values", grid.values}, {"x", x}, {"y", y},
           {"box", {{"x", box.x}, {"y", box.y}, {"closed", box.closed}, {"value", box.value}}}};
 }
@@ -148,13 +148,14 @@ Section discrepancy_section(SectionContext& context) {
     const sa::PointView view{points.data.get(), points.n, points.d};
     const double star = sa::compute_measure("star", view, measure).value;
     const double l2 = sa::compute_measure("l2-star", view, measure).value;
-    values.rows.push_back({points.n == n ? label : fmt::format("{} (N = {})", label, points.n), format_number(star),
+    const std::string name = named_with_spec(choice);
+    values.rows.push_back({points.n == n ? name : fmt::format("{} (N = {})", name, points.n), format_number(star),
                            format_number(l2)});
-    if (star < lowest.first) lowest = {star, label};
-    if (star > highest.first) highest = {star, label};
+    if (star < lowest.first) lowest = {star, sampler_name(choice)};
+    if (star > highest.first) highest = {star, sampler_name(choice)};
     nlohmann::json& entry = section.numbers["patterns"][label];
     entry = {{"n", points.n}, {"star", star}, {"l2_star", l2}};
-    std::vector<std::string> row{label};
+    std::vector<std::string> row{name};
     for (const auto& check : sa::koksma_hlawka_checks(view, star)) {
       row.push_back(fmt::format("{} ≤ {}: {}", format_number(check.error), format_number(check.bound),
                                 check.holds ? "holds" : "FAILS"));
@@ -164,7 +165,7 @@ Section discrepancy_section(SectionContext& context) {
       held += check.holds;
       const double fraction = check.bound > 0 ? check.error / check.bound : 0;
       fractions.push_back(fraction);
-      if (fraction > tightest) tightest = fraction, tightest_where = label + ", " + check.function;
+      if (fraction > tightest) tightest = fraction, tightest_where = sampler_name(choice) + ", " + check.function;
     }
     checks.rows.push_back(std::move(row));
   }
@@ -195,6 +196,7 @@ Section discrepancy_section(SectionContext& context) {
   section.tables.push_back(std::move(values));
   section.tables.push_back(std::move(function_table));
   section.tables.push_back(std::move(checks));
+  section.try_it = {"stratum discrepancy -m star -s halton -n 1024", "stratum discrepancy -m l2-star -s sobol -n 1024 --randomize owen"};
   return section;
 }
 

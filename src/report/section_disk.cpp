@@ -139,6 +139,7 @@ Section disk_section(SectionContext& context) {
   section.figures.push_back(context.plot("report_points", {{"columns", 3}, {"panels", panels}}, "maps",
                                          "A jittered grid, coloured by stratum, and its images under the two maps"));
   section.tables.push_back(std::move(table));
+  section.try_it = {"stratum warp -m disk-concentric -s jittered -n 256"};
   return section;
 }
 

@@ -146,7 +146,7 @@ Section four_views_section(SectionContext& context) {
     if (takes(extra, settings.n))
       samplers.push_back(extra);
     else
-      skipped.push_back(label(extra));
+      skipped.push_back(named_with_spec(extra));
   }
 
   std::vector<Views> views;
@@ -182,7 +182,7 @@ Section four_views_section(SectionContext& context) {
   std::vector<std::string> names;
   for (std::size_t s = 0; s < samplers.size(); ++s) {
     names.push_back(label(samplers[s]));
-    std::vector<std::string> row{names.back()};
+    std::vector<std::string> row{named_with_spec(samplers[s])};
     nlohmann::json values = nlohmann::json::array(), row_ranks = nlohmann::json::array();
     nlohmann::json entry;
     for (std::size_t c = 0; c < columns.size(); ++c) {
@@ -226,7 +226,8 @@ Section four_views_section(SectionContext& context) {
     return column_ranks[column_of(key)][row_of(name)];
   };
   const auto best_sentence = [&](const std::string& what, const std::string& key) {
-    return fmt::format("the lowest {} is {}'s ({}; random {})", what, best_of(key), value_of(best_of(key), key),
+    return fmt::format("the lowest {} is {}'s ({}; random {})", what,
+                       sampler_name(samplers[row_of(best_of(key))]), value_of(best_of(key), key),
                        value_of("random", key));
   };
   section.text.push_back(fmt::format(
@@ -257,6 +258,7 @@ Section four_views_section(SectionContext& context) {
                   "the cell)",
                   settings.n)));
   section.tables.push_back(std::move(table));
+  section.try_it = {"stratum spectrum -s poisson-disk -n 1024 -o spectrum.png"};
   return section;
 }
 

@@ -83,16 +83,22 @@ Section importance_section(SectionContext& context) {
   const auto box = render::comparison_scene("", false, scale.width, scale.height);
 
   // Area vs solid-angle light sampling, then uniform vs cosine irradiance.
-  const auto light_configs = render::builtin_comparison("light-strategy", context.threads(), context.seed());
+  // The slide compares area with *projected* solid angle (p ∝ cos θ dω): the builtin's two rows and a third.
+  auto light_configs = render::builtin_comparison("light-strategy", context.threads(), context.seed());
+  render::CompareConfig projected = light_configs.back();
+  projected.label = "projected solid angle";
+  projected.settings.light_strategy = "projected-solid-angle";
+  light_configs.push_back(projected);
   const RenderedComparison light = run_comparison(box, light_configs, scale.reference_spp, context.cache_dir());
   const auto hemisphere_configs = render::builtin_comparison("hemisphere", context.threads(), context.seed());
   const RenderedComparison hemisphere = run_comparison(box, hemisphere_configs, scale.reference_spp, context.cache_dir());
   section.figures.push_back(image_figure(
       context, comparison_panels(light), "light-strategy",
-      fmt::format("Direct lighting, {} eye rays × {} shadow rays per pixel: the light sampled by area and by solid angle",
+      fmt::format("Direct lighting, {} eye rays × {} shadow rays per pixel: the light sampled by area, by solid angle "
+                  "and by projected solid angle",
                   light.rows.front().samples, light_configs.front().settings.light_samples)));
   section.tables.push_back(comparison_table(
-      light, fmt::format("Area vs solid-angle light sampling against a {}-spp reference", light.reference_spp)));
+      light, fmt::format("Area, solid-angle and projected-solid-angle light sampling against a {}-spp reference", light.reference_spp)));
   section.figures.push_back(image_figure(
       context, comparison_panels(hemisphere), "hemisphere",
       fmt::format("Irradiance, {} eye rays × {} directions per pixel: uniform and cosine-weighted hemisphere sampling",
@@ -168,6 +174,14 @@ Section importance_section(SectionContext& context) {
   const auto& solid = light.rows.at(1);
   const auto& uniform = hemisphere.rows.at(0);
   const auto& cosine = hemisphere.rows.at(1);
+  const auto& projected_row = light.rows.at(2);
+  // The study's variance ratio (area / solid angle) at its smallest and largest light size over distance.
+  const analysis::ImportanceComparison* smallest = nullptr;
+  const analysis::ImportanceComparison* largest = nullptr;
+  for (const auto& c : study.light) {
+    if (!smallest || c.size / c.distance < smallest->size / smallest->distance) smallest = &c;
+    if (!largest || c.size / c.distance > largest->size / largest->distance) largest = &c;
+  }
   const auto& zero = section.numbers["zero_variance"];
   section.text.push_back(fmt::format(
       "Drawing X from p and averaging f(X)/p(X) is unbiased for any p > 0 where f ≠ 0; the variance depends on how "
@@ -175,6 +189,16 @@ Section importance_section(SectionContext& context) {
       "that of solid-angle sampling; solid angle took {}× the time, so its efficiency is {}× area sampling's.",
       area.samples, light_configs.front().settings.light_samples, format_number(solid.mse_ratio),
       format_number(solid.seconds / area.seconds), format_number(solid.efficiency_ratio)));
+  section.text.push_back(fmt::format(
+      "The slide's comparison is with projected solid angle (p ∝ cos θ dω, which also follows the cosine at the "
+      "receiver): its MSE is {}× smaller than area sampling's and its efficiency {}× area's. The study below "
+      "explains why the gains in the box are modest: the variance ratio (area / solid angle) is {} when the light "
+      "is small beside its distance (size/distance {}) and {} when it is large (size/distance {}); the box's "
+      "light (130 × 105 mm, 549 mm above the floor: size/distance about 0.2 there) is near the small end, where both strategies sample nearly "
+      "the same directions and solid angle's extra work per sample is not repaid.",
+      format_number(projected_row.mse_ratio), format_number(projected_row.efficiency_ratio),
+      format_number(smallest->variance_ratio), format_number(smallest->size / smallest->distance),
+      format_number(largest->variance_ratio), format_number(largest->size / largest->distance)));
   section.text.push_back(fmt::format(
       "For irradiance in the box, the MSE with uniform directions is {}× that with cosine-weighted ones (p = cos θ/π); "
       "cosine-weighted sampling took {}× the time of uniform, an efficiency ratio (cosine/uniform) of {}.",
@@ -188,6 +212,7 @@ Section importance_section(SectionContext& context) {
       format_number(zero["cosine"]["largest_pixel_variance"]), format_number(zero["uniform"]["sample_variance"]),
       format_number(zero["uniform"]["predicted_variance"]), format_number(zero["cosine"]["mean"], 4),
       format_number(zero["uniform"]["mean"], 4), format_number(zero["expected_mean"], 4)));
+  section.try_it = {"stratum compare --builtin light-strategy --width 64 --height 64", "stratum study importance --plot importance.png"};
   return section;
 }
 

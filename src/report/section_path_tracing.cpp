@@ -50,6 +50,7 @@ Section path_tracing_section(SectionContext& context) {
       comparison.reference_spp, format_number(complete.mse), format_number(incomplete.mse),
       format_number(incomplete.mse_ratio), format_number(complete.seconds), format_number(incomplete.seconds),
       format_number(incomplete.efficiency_ratio)));
+  section.try_it = {"stratum compare --builtin path --width 64 --height 64"};
   return section;
 }
 

@@ -55,7 +55,7 @@ bool accepts(const sa::SamplerChoice& choice, std::uint64_t n) {
 /// about the radix point, and φ2(i) from the library.
 Table radical_inverse_table(nlohmann::json& numbers) {
   Table table{"The radical inverse φ2(i): the binary digits of i mirrored about the radix point",
-              {"i", "i in base 2", "mirrored", "φ2(i)", "φ2(i) × 16"}, {}};
+              {"i", "i in base 2", "mirrored", "φ2(i)", "φ2(i) × 16", "the slide"}, {}};
   bool agrees = true;
   for (std::uint64_t i = 0; i < 16; ++i) {
     std::string binary, mirrored = "0.";
@@ -68,16 +68,20 @@ Table radical_inverse_table(nlohmann::json& numbers) {
     }
     const double phi = radical_inverse(2, i);
     agrees = agrees && phi == mirrored_value;
+    // The slide's worked example, i = 4 = 100₂, prints 3/8; mirroring gives 0.001₂ = 1/8.
+    const std::string slide = i == 4 ? "3/8: erratum, it is 1/8" : "";
     table.rows.push_back({std::to_string(i), binary + "₂", mirrored + "₂", fmt::format("{}", phi),
-                          fmt::format("{}", phi * 16)});
+                          fmt::format("{}", phi * 16), slide});
     numbers["phi2"].push_back(phi);
   }
   numbers["phi2_equals_mirrored_digits"] = agrees;
+  numbers["slide_erratum"] = {{"i", 4}, {"slide", 3.0 / 8}, {"correct", radical_inverse(2, 4)}};
   return table;
 }
 
 struct Curve {
-  std::string label;
+  std::string label;  ///< the registry spec (report.json's key)
+  std::string name;   ///< for the page
   std::vector<double> n, mean, error;
   sa::SlopeFit fit;
 };
@@ -86,7 +90,7 @@ struct Curve {
 /// mean (and standard error) over `runs` seeds.
 Curve discrepancy_curve(const sa::SamplerChoice& choice, const std::vector<std::uint64_t>& counts, unsigned runs,
                         std::uint64_t seed, unsigned threads) {
-  Curve curve{choice_label(choice), {}, {}, {}, {}};
+  Curve curve{choice_label(choice), sampler_name(choice), {}, {}, {}, {}};
   sa::MeasureRequest measure;
   measure.threads = threads;
   for (std::uint64_t n : counts) {
@@ -124,7 +128,7 @@ nlohmann::json reference(const Curve& curve, const std::string& label, double (*
 }
 
 nlohmann::json series(const Curve& curve) {
-  nlohmann::json s = {{"label", fmt::format("{} (slope {})", curve.label, format_number(curve.fit.slope))},
+  nlohmann::json s = {{"label", fmt::format("{} (slope {})", capitalized(curve.name), format_number(curve.fit.slope))},
                       {"x", curve.n}, {"y", curve.mean}};
   if (std::any_of(curve.error.begin(), curve.error.end(), [](double e) { return e > 0; })) s["yerr"] = curve.error;
   return s;
@@ -203,7 +207,7 @@ Section qmc_section(SectionContext& context) {
       section.numbers["skipped"].push_back(curve.label);
       continue;
     }
-    slopes.rows.push_back({curve.label, fmt::format("{}–{}", curve.n.front(), curve.n.back()),
+    slopes.rows.push_back({capitalized(curve.name) + " `" + curve.label + "`", fmt::format("{}–{}", curve.n.front(), curve.n.back()),
                            format_number(curve.fit.slope), format_number(curve.fit.slope_standard_error),
                            format_number(curve.mean.back())});
     section.numbers["curves"][curve.label] = {{"n", curve.n}, {"star", curve.mean}, {"standard_error", curve.error},
@@ -218,8 +222,9 @@ Section qmc_section(SectionContext& context) {
   section.numbers["runs"] = runs;
 
   section.text.push_back(fmt::format(
-      "φ2(i) mirrors the binary digits of i about the radix point (i = 4 = 100₂ gives 0.001₂ = {}); the library's "
-      "radical inverse {} the mirrored digits for every i in the table.",
+      "φ2(i) mirrors the binary digits of i about the radix point: i = 4 = 100₂ gives 0.001₂ = {} (the slide "
+      "prints 3/8 for this entry, an erratum: 3/8 = 0.011₂ is φ2(6)); the library's radical inverse {} the "
+      "mirrored digits for every i in the table.",
       radical_inverse(2, 4), section.numbers["phi2_equals_mirrored_digits"].get<bool>() ? "equals" : "DIFFERS FROM"));
   section.text.push_back(fmt::format(
       "From N = {} to {}, the exact star discrepancy falls with fitted slopes {} (Hammersley), {} (Halton) and {} "
@@ -233,6 +238,7 @@ Section qmc_section(SectionContext& context) {
       "factors small beside it).",
       format_number(spread_hammersley), format_number(spread_halton),
       format_number(static_cast<double>(counts.back()) / counts.front())));
+  section.try_it = {"stratum discrepancy -m star -s hammersley -n 1024 --randomize none"};
   return section;
 }
 

@@ -162,6 +162,7 @@ Section space_time_section(SectionContext& context) {
       "Rendered with {} samples per pixel against a {}-spp reference, the whole-image MSE is {}; over the {} pixels "
       "where the renders differ (elsewhere they agree, so their error there is common to all) it is {}.",
       comparison.rows.front().samples, comparison.reference_spp, whole, moving_count, local));
+  section.try_it = {"stratum compare --builtin time-pattern --width 64 --height 64"};
   return section;
 }
 

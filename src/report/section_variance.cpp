@@ -47,6 +47,7 @@ Section variance_section(SectionContext& context) {
       "that of 1.",
       format_number(time_ratio), format_number(sixteen.seconds), format_number(one.seconds),
       format_number(sixteen.efficiency_ratio)));
+  section.try_it = {"stratum compare --builtin shadow-rays --width 64 --height 64"};
   return section;
 }
 

@@ -15,6 +15,7 @@ Section block_designs_section(SectionContext& context);   // §7  section_block_
 Section space_time_section(SectionContext& context);      // §8  section_space_time.cpp
 Section path_tracing_section(SectionContext& context);    // §9  section_path_tracing.cpp
 Section discrepancy_section(SectionContext& context);     // §10 section_discrepancy.cpp
+Section edge_discrepancy_section(SectionContext& context);  // §10 section_edge_discrepancy.cpp
 Section qmc_section(SectionContext& context);             // §11 section_qmc.cpp
 Section patterns_section(SectionContext& context);        // §12 section_patterns.cpp
 Section four_views_section(SectionContext& context);      // §13 section_four_views.cpp
@@ -22,5 +23,39 @@ Section four_views_section(SectionContext& context);      // §13 section_four_v
 /// Formats a number for the page: `digits` significant digits, no
 /// exponent between 1e-3 and 1e6.
 std::string format_number(double value, int digits = 3);
+
+// Words for the page (names.cpp).
+
+/// "sobol:owen" (or "sobol" when no randomizer is given).
+std::string sampler_spec(const std::string& sampler, const std::string& randomize);
+std::string sampler_spec(const analysis::SamplerChoice& choice);
+/// The name a reader knows: "Owen-scrambled Sobol'", "Zaremba with
+/// Cranley–Patterson rotation", "random" (an empty randomizer is the
+/// registry's default).
+std::string sampler_name(const std::string& sampler, const std::string& randomize);
+std::string sampler_name(const analysis::SamplerChoice& choice);
+/// The name followed by its spec as inline code: "Owen-scrambled Sobol' `sobol:owen`"
+/// (the page shows text between backticks as a small code tag).
+std::string named_with_spec(const analysis::SamplerChoice& choice);
+/// The first letter in upper case (for a name that starts a sentence or a cell).
+std::string capitalized(std::string text);
+/// "1 point", "16 points" (plural: singular + "s" unless given).
+std::string counted(std::uint64_t count, const std::string& singular, const std::string& plural = "");
+/// "340 ms", "2.31 s", "under 1 ms": never "0.0 s".
+std::string format_seconds(double seconds);
+
+/// E[A(1 − A)] over random lines hitting the unit square (the
+/// motion-invariant measure of Mitchell's random edges; A the area cut off):
+/// N·E[D²] of N independent uniform points (section_patterns.cpp).
+double expected_binomial_edge_variance(int steps);
+
+/// A lecture topic (LECTURE.md) and its title as the lecture gives it.
+struct LectureTopic {
+  std::string lecture;  ///< "§10"
+  std::string title;
+};
+
+/// The lecture's 13 topics in order, for the index at the top of the page.
+const std::vector<LectureTopic>& lecture_topics();
 
 }  // namespace stratum::report

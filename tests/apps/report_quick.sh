@@ -45,6 +45,26 @@ numbers = json.loads((out / "report.json").read_text())
 assert numbers["quick"] is True and sorted(numbers["sections"]) == sorted(ids), sorted(numbers["sections"])
 for section in ids:
     assert numbers["sections"][section]["numbers"], f"section {section} reports no number"
+# The lecture's numbers beside ours: Mitchell's (1992) table as printed, with the ratio.
+mitchell = {"zaremba": [0.0504, 0.00478, 0.00111], "jittered": [0.0538, 0.00595, 0.00146],
+            "poisson-disk": [0.0613, 0.00767, 0.00241], "n-rooks": [0.0637, 0.0123, 0.00488],
+            "random": [0.0924, 0.0224, 0.00866]}
+patterns = numbers["sections"]["patterns"]["numbers"]
+for pattern, values in mitchell.items():
+    cells = patterns["mitchell_1992"][pattern]
+    assert [c["mitchell"] for c in cells] == values, (pattern, cells)
+    for cell, ours in zip(cells, patterns["patterns"][pattern]["cells"]):
+        assert cell["ours"] == ours["rms"] and abs(cell["ratio"] - ours["rms"] / cell["mitchell"]) < 1e-12, cell
+assert len(patterns["random_expected_rms"]) == 3
+# The edge-discrepancy slide: 1, 2, 4, 8 samples on the 8x8 grid, each at least the bound 1/(2N), on the page.
+edge = numbers["sections"]["edge-discrepancy"]["numbers"]
+assert sorted({p["n"] for p in edge["grid_patterns"]}) == [1, 2, 4, 8], edge["grid_patterns"]
+for p in edge["grid_patterns"]:
+    assert 0.5 / p["n"] - 1e-12 <= p["edge_discrepancy"] <= 1, p
+page_text = (out / "index.html").read_text()
+assert 'id="edge-discrepancy"' in page_text
+for p in edge["grid_patterns"]:
+    assert p["name"].replace("×", "×") in page_text, p["name"]
 print(f"{len(ids)} sections, {sum(map(len, page.images.values()))} figures")
 PY
 [ -z "$(ls -A "$out" | grep partial)" ] && ok || fail "no staging folder left behind"

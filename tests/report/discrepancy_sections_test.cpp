@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "section_harness.hpp"
+#include "stratum/analysis/edge_discrepancy.hpp"
 #include "stratum/analysis/koksma_hlawka.hpp"
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/registry.hpp"
@@ -91,6 +93,11 @@ TEST(QmcSection, RadicalInverseTableAndExactCurves) {
   }
   EXPECT_TRUE(numbers["phi2_equals_mirrored_digits"].get<bool>());
   EXPECT_EQ(section.tables.front().rows[4][2], "0.0010₂");  // the lecture's 4 = 100₂ → 0.001₂
+  // The slide's worked example prints 3/8: marked as an erratum beside the right value.
+  EXPECT_EQ(numbers["slide_erratum"]["slide"].get<double>(), 0.375);
+  EXPECT_EQ(numbers["slide_erratum"]["correct"].get<double>(), 0.125);
+  EXPECT_NE(section.tables.front().rows[4].back().find("erratum"), std::string::npos);
+  EXPECT_TRUE(section.tables.front().rows[3].back().empty());
   const auto& hammersley = numbers["curves"]["hammersley:none"];
   for (std::size_t k : {0u, 5u}) {
     const auto n = static_cast<std::uint64_t>(hammersley["n"][k].get<double>());
@@ -133,6 +140,89 @@ TEST(PatternsSection, MitchellTableExtrasAndTheRandomRate) {
     variance += std::pow(weight * cell["rms_se"].get<double>() / cell["rms"].get<double>(), 2);
   }
   EXPECT_NEAR(patterns["random"]["slope"].get<double>(), -0.5, 3.29 * std::sqrt(variance));
+}
+
+TEST(PatternsSection, MitchellsPublishedValuesBesideOursWithTheRatio) {
+  const Section section = run_section("patterns");
+  const auto& published = section.numbers["mitchell_1992"];
+  ASSERT_EQ(published.size(), 5u);
+  EXPECT_EQ(published["zaremba"][0]["mitchell"].get<double>(), 0.0504);
+  EXPECT_EQ(published["random"][2]["mitchell"].get<double>(), 0.00866);
+  for (const auto& [id, cells] : published.items())
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double ours = section.numbers["patterns"][id]["cells"][k]["rms"];
+      EXPECT_EQ(cells[k]["ours"].get<double>(), ours);
+      EXPECT_DOUBLE_EQ(cells[k]["ratio"].get<double>(), ours / cells[k]["mitchell"].get<double>());
+    }
+  // The expected RMS of random points, √(c/N), against the measured one: the
+  // measured mean of per-realization RMS lies a little below (Jensen), within
+  // 4 standard errors plus 5% (quick: 6 realizations).
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto& cell = section.numbers["patterns"]["random"]["cells"][k];
+    const double expected = section.numbers["random_expected_rms"][k]["rms"];
+    EXPECT_NEAR(cell["rms"].get<double>(), expected, 4 * cell["rms_se"].get<double>() + 0.05 * expected) << k;
+  }
+}
+
+TEST(PatternsSection, ExpectedBinomialEdgeVarianceAgreesWithRandomLines) {
+  // The quadrature over the line measure against the mean of A(1 − A) over
+  // the study's own random lines: z-test, two-sided α = 1e-3 (z = 3.29).
+  const double quadrature = expected_binomial_edge_variance(600);
+  const std::size_t lines = 200000;
+  double sum = 0, squares = 0;
+  for (std::size_t i = 0; i < lines; ++i) {
+    const analysis::EdgeLine line = analysis::random_isotropic_line(7, i);
+    const double area = analysis::half_plane_area(std::cos(line.angle), std::sin(line.angle), line.offset);
+    sum += area * (1 - area);
+    squares += area * area * (1 - area) * (1 - area);
+  }
+  const double mean = sum / lines, se = std::sqrt((squares / lines - mean * mean) / lines);
+  EXPECT_NEAR(quadrature, mean, 3.29 * se);
+  EXPECT_NEAR(expected_binomial_edge_variance(300), quadrature, 1e-5);  // converged
+}
+
+TEST(EdgeDiscrepancySection, GridPatternsAgainstTheDirectEnumerationAndTheBound) {
+  const Section section = run_section("edge-discrepancy", {}, /*draw=*/true);
+  const auto& patterns = section.numbers["grid_patterns"];
+  std::map<std::size_t, double> best, standard;
+  for (const auto& p : patterns) {
+    std::vector<double> xy;
+    for (const auto& cell : p["cells"])
+      xy.insert(xy.end(), {(cell[0].get<int>() + 0.5) / 8, (cell[1].get<int>() + 0.5) / 8});
+    const std::size_t n = p["n"];
+    ASSERT_EQ(xy.size(), 2 * n);
+    const analysis::PointView view{xy.data(), n, 2};
+    const double value = p["edge_discrepancy"];
+    // The O(N³) enumeration of every candidate line is an independent oracle
+    // (for 2 or more points; one sample's value is checked through its line).
+    if (n >= 2) EXPECT_NEAR(value, analysis::edge_discrepancy_naive(view).value, 1e-12) << p["name"];
+    // The reported line attains it.
+    const analysis::EdgeLine line{p["line"]["angle"].get<double>(), p["line"]["offset"].get<double>()};
+    // Samples exactly on the line may be counted on one side only in floating point: a lower bound.
+    EXPECT_LE(analysis::line_discrepancy(view, line), value + 1e-9) << p["name"];
+    EXPECT_GE(value, 0.5 / n - 1e-12) << p["name"];  // no N-sample pattern beats 1/(2N)
+    EXPECT_LE(p["axis_aligned"].get<double>(), value + 1e-12);
+    const std::string name = p["name"];
+    if (name.find("the best N-rooks") != std::string::npos)
+      best[n] = value;
+    else if (name.find("ordered") == std::string::npos)  // the other standard patterns are N-rooks too
+      standard[n] = std::min(standard.count(n) ? standard[n] : INFINITY, value);
+  }
+  ASSERT_EQ(best.size(), 4u);
+  for (const auto& [n, value] : standard) EXPECT_LE(best[n], value + 1e-12) << n;
+  // One sample: the best placement on the grid is a centre subpixel, whose
+  // worst line through it cuts off the smaller part of the pixel.
+  EXPECT_GT(best[1], 0.5);
+  // The ordered 2×2 grid has two rows, y = 2.5/8 and 5.5/8: the horizontal
+  // edge through the upper row has all 4 samples on its closed side and area
+  // 5.5/8 there, an error of 2.5/8 > 1/4.
+  const auto ordered = std::find_if(patterns.begin(), patterns.end(),
+                                    [](const nlohmann::json& p) { return p["name"].get<std::string>().find("ordered") != std::string::npos; });
+  ASSERT_NE(ordered, patterns.end());
+  EXPECT_GT((*ordered)["axis_aligned"].get<double>(), 0.25);
+  for (const auto& [id, cells] : section.numbers["lecture_patterns"].items())
+    for (const auto& cell : cells) EXPECT_GE(cell["mean"].get<double>(), 0.5 / cell["n"].get<double>() - 1e-12) << id;
+  EXPECT_FALSE(section.try_it.empty());
 }
 
 }  // namespace

@@ -48,6 +48,9 @@ struct Section {
   std::vector<std::string> text;
   std::vector<Figure> figures;
   std::vector<Table> tables;
+  /// "Try it": commands (and Python calls) that reproduce the section's
+  /// measurement with other samplers, shown at the end of the section.
+  std::vector<std::string> try_it;
   nlohmann::json numbers = nlohmann::json::object();  ///< the measurements, written to report.json
   double seconds = 0;                                  ///< wall time of the section
 };

@@ -15,9 +15,9 @@ with open(sys.argv[1]) as handle:
     data = json.load(handle)
 
 series = data["series"]
-columns = min(5, len(series))
+columns = min(3, len(series))  # 10.8 in at 100 dpi: legible without scaling down on a 1100 px page
 rows = math.ceil(len(series) / columns)
-figure, axes = plt.subplots(rows, columns, figsize=(3.2 * columns, 2.8 * rows), squeeze=False, sharey=True)
+figure, axes = plt.subplots(rows, columns, figsize=(3.6 * columns, 3.0 * rows), squeeze=False, sharey=True)
 
 
 def slope_text(value):
@@ -40,13 +40,13 @@ for index, s in enumerate(series):
         draw(ax, n, s["sobol_rmse"], marker="^", label=f"Sobol' ({slope_text(s['sobol_slope'])})")
     ax.set_title(f'd = {s["d"]}', fontsize="medium")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize="x-small")
+    ax.legend(fontsize=8)
     if index % columns == 0:
         ax.set_ylabel("error")
     if index // columns == rows - 1:
         ax.set_xlabel("N")
 for index in range(len(series), rows * columns):
     axes[index // columns][index % columns].axis("off")
-figure.suptitle(f'{data["integrand"]}: {data["rule"]} product rule vs Monte Carlo, {data["runs"]} runs per N')
+figure.suptitle(f'The {data["rule"]} product rule against Monte Carlo on {data["integrand"]}, {data["runs"]} runs per N')
 figure.tight_layout()
-figure.savefig(sys.argv[2], dpi=110)
+figure.savefig(sys.argv[2], dpi=100)

@@ -11,6 +11,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import LogFormatterSciNotation, LogLocator  # noqa: E402
 
 with open(sys.argv[1]) as handle:
     data = json.load(handle)
@@ -30,6 +31,11 @@ for axes, name in ((left, "variance ratio (area / solid angle)"), (right, "effic
     axes.set_yscale("log")
     axes.set_xlabel("light size / distance")
     axes.set_ylabel(name)
+    for axis in (axes.xaxis, axes.yaxis):  # more than one labelled tick on short log ranges
+        low, high = axis.get_view_interval()
+        if low > 0 and high / low < 30:
+            axis.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
+            axis.set_minor_formatter(LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(100, 100)))
     axes.grid(True, which="both", alpha=0.3)
     axes.legend(fontsize="small")
 left.set_title("measured (±1 s.e.), predicted dotted", fontsize="medium")
@@ -37,11 +43,13 @@ left.set_title("measured (±1 s.e.), predicted dotted", fontsize="medium")
 
 def ratio_text(row):
     value = row["variance_ratio"]
-    return "variance 0 (exact)" if value is None or value > 1e15 else f"{value:.3g}"
+    if value is None or value > 1e15:
+        return "cosine-weighted sampling has zero variance (the ratio is infinite)"
+    return f"uniform has {value:.3g}× the variance of cosine-weighted sampling"
 
 
-hemisphere = "; ".join(f'{r["scene"]}: uniform/cosine variance ratio {ratio_text(r)}' for r in data["hemisphere"])
-figure.suptitle(f'Importance sampling, {data["runs"]} runs x {data["samples"]} samples\n{hemisphere}',
-                fontsize="medium")
+hemisphere = "; ".join(f'{r["scene"]}: {ratio_text(r)}' for r in data["hemisphere"])
+figure.suptitle(f'Solid-angle against area sampling of a square light, {data["runs"]} runs × {data["samples"]} '
+                f'samples.\nHemisphere: {hemisphere}.', fontsize="medium")
 figure.tight_layout()
 figure.savefig(sys.argv[2], dpi=110)

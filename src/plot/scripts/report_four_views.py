@@ -16,7 +16,9 @@ with open(sys.argv[1]) as handle:
     data = json.load(handle)
 patterns, views, values, ranks = data["patterns"], data["views"], data["values"], data["ranks"]
 count = len(patterns)
-figure, axes = plt.subplots(figsize=(1.45 * len(views) + 2.4, 0.42 * count + 1.6))
+# At most 11 in at 100 dpi (the page is 1100 px wide), so that 8-point text stays above 10 px.
+width = min(11.0, 1.25 * len(views) + 2.2)
+figure, axes = plt.subplots(figsize=(width, 0.48 * count + 1.8))
 image = axes.imshow(ranks, cmap="viridis_r", vmin=1, vmax=max(count, 2), aspect="auto")
 for row in range(count):
     for column in range(len(views)):
@@ -24,7 +26,7 @@ for row in range(count):
         text = "n/a" if value is None else f"{value:.3g}"
         # viridis_r: the best ranks are light (dark text), the worst dark (light text).
         colour = "black" if ranks[row][column] <= (count + 1) / 2 else "white"
-        axes.text(column, row, f"{text}\n#{ranks[row][column]}", ha="center", va="center", fontsize=7, color=colour)
+        axes.text(column, row, f"{text}\n#{ranks[row][column]}", ha="center", va="center", fontsize=8, color=colour)
 axes.set_xticks(range(len(views)))
 axes.set_xticklabels([name.replace(" (", "\n(") for name in views], fontsize=8)
 axes.set_yticks(range(count))

@@ -25,7 +25,8 @@ def srgb(linear):
 with open(sys.argv[1]) as handle:
     data = json.load(handle)
 panels = data["panels"]
-columns = min(data.get("columns", len(panels)), len(panels))
+# At most 4 panels a row (10.4 in at 100 dpi): never scaled down on the page.
+columns = min(data.get("columns", len(panels)), len(panels), 4)
 rows = math.ceil(len(panels) / columns)
 size = data.get("size", 2.6)
 figure, axes_grid = plt.subplots(rows, columns, figsize=(size * columns, (size + 0.45) * rows), squeeze=False)

@@ -25,7 +25,7 @@ for axes, square in zip(axes_list[0], squares):
         for c, symbol in enumerate(row):
             index = alphabet.index(symbol)
             axes.add_patch(plt.Rectangle((c, m - 1 - r), 1, 1, color=colours(index % colours.N), alpha=0.35))
-            axes.text(c + 0.5, m - 0.5 - r, symbol, ha="center", va="center", fontsize=max(6, 40 // m))
+            axes.text(c + 0.5, m - 0.5 - r, symbol, ha="center", va="center", fontsize=max(8, 40 // m))
     for k in range(m + 1):
         axes.axhline(k, color="0.3", linewidth=0.6)
         axes.axvline(k, color="0.3", linewidth=0.6)

@@ -16,9 +16,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 with open(sys.argv[1]) as handle:
     data = json.load(handle)
 patterns = data["patterns"]
-blocks = math.ceil(len(patterns) / 6)
+blocks = math.ceil(len(patterns) / 4)  # at most 4 a row: 10.4 in at 100 dpi, not scaled down on the page
 columns = math.ceil(len(patterns) / blocks)  # balanced rows
-figure = plt.figure(figsize=(2.9 * columns, 5.4 * blocks))
+figure = plt.figure(figsize=(2.6 * columns, 5.0 * blocks))
 grid = figure.add_gridspec(2 * blocks, columns, height_ratios=[3.0, 2.2] * blocks)
 for index, pattern in enumerate(patterns):
     block, column = divmod(index, columns)
@@ -35,9 +35,9 @@ for index, pattern in enumerate(patterns):
     axes = figure.add_subplot(grid[2 * block + 1, column])
     axes.plot(spectrum["frequency"], spectrum["power"], color="tab:blue")
     axes.axhline(1.0, color="gray", linewidth=0.8, linestyle="--")
-    axes.set_xlabel("frequency / sqrt(N)")
+    axes.set_xlabel("frequency / √N")
     if column == 0:
         axes.set_ylabel("radial power")
     axes.set_ylim(bottom=0)
 figure.tight_layout()
-figure.savefig(sys.argv[2], dpi=data.get("dpi", 90))
+figure.savefig(sys.argv[2], dpi=data.get("dpi", 100))

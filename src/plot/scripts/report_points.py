@@ -3,7 +3,9 @@ points in the unit square or the unit disk, optionally coloured by stratum,
 with grid lines and 1D projections drawn as ticks under and beside it.
 Data: {"columns": C, "size": inches per panel, "title": "...",
        "panels": [{"title", "x", "y", "color" (optional ints), "grid" (optional
-       cells per axis), "disk" (bool), "projections" (bool)}]}
+       cells per axis), "disk" (bool), "projections" (bool), "line" (optional
+       {"angle", "offset"}: the line cos(angle) x + sin(angle) y = offset, drawn
+       with the side cos(angle) x + sin(angle) y < offset shaded)}]}
 Usage: python3 report_points.py DATA.json OUT.png"""
 import json
 import math
@@ -13,6 +15,30 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def draw_line(axes, line):
+    """The line clipped to the unit square, and its lower side shaded."""
+    nx, ny, offset = math.cos(line["angle"]), math.sin(line["angle"]), line["offset"]
+    grid = np.linspace(0.0, 1.0, 401)
+    gx, gy = np.meshgrid(grid, grid)
+    axes.contourf(gx, gy, (nx * gx + ny * gy < offset).astype(float), levels=[0.5, 1.5], colors=["tab:red"],
+                  alpha=0.12, zorder=0)
+    ends = []
+    for t in (0.0, 1.0):  # crossings of x = t and y = t
+        if abs(ny) > 1e-12:
+            y = (offset - nx * t) / ny
+            if -1e-9 <= y <= 1 + 1e-9:
+                ends.append((t, y))
+        if abs(nx) > 1e-12:
+            x = (offset - ny * t) / nx
+            if -1e-9 <= x <= 1 + 1e-9:
+                ends.append((x, t))
+    if len(ends) >= 2:
+        ends.sort()
+        axes.plot([ends[0][0], ends[-1][0]], [ends[0][1], ends[-1][1]], color="tab:red", linewidth=1.6, zorder=4)
+
 
 with open(sys.argv[1]) as handle:
     data = json.load(handle)
@@ -42,6 +68,8 @@ for index, axes in enumerate(axes_grid.flat):
         # 1D projections as ticks just outside the square.
         axes.plot(panel["x"], [-0.04] * len(panel["x"]), "|", color="k", markersize=6, clip_on=False)
         axes.plot([-0.04] * len(panel["y"]), panel["y"], "_", color="k", markersize=6, clip_on=False)
+    if panel.get("line"):
+        draw_line(axes, panel["line"])
     margin = 0.06 if panel.get("projections", False) else 0.01
     axes.set_xlim(low - margin, 1.01)
     axes.set_ylim(low - margin, 1.01)
