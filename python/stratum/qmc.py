@@ -132,7 +132,8 @@ def _optimization(value):
         return None
     if isinstance(value, str) and value.lower() in _OPTIMIZATIONS:
         return value.lower()
-    raise _invalid("optimization", value, "must be None, 'random-cd' or 'lloyd'")
+    raise _invalid("optimization", value, f"{value!r} is not a valid optimization method. It must be one of "
+                   f"{set(_OPTIMIZATIONS)!r}")
 
 
 def _sample_count(n):
@@ -145,9 +146,16 @@ class _Engine(QMCEngine):
     _registry_name = ""
 
     def _check_d(self, d):
+        """d = 0 is scipy's empty engine (samples of shape (n, 0)); otherwise the registry's range."""
         info = _sampler(self._registry_name)
-        return _integer("d", d, info["min_dim"], info["max_dim"],
-                        f"{self._registry_name} supports d from {info['min_dim']} to {info['max_dim']}")
+        d = _integer("d", d, 0, allowed="d must be a non-negative integer value")
+        if d > info["max_dim"]:
+            raise _invalid("d", d, f"{self._too_many_dimensions(info['max_dim'])} "
+                           f"({self._registry_name} supports d from {info['min_dim']} to {info['max_dim']})")
+        return d
+
+    def _too_many_dimensions(self, max_dim):
+        return f"Maximum supported dimensionality is {max_dim}."
 
     def _setup(self, d, *, optimization, seed, rng):
         d = self._check_d(d)
@@ -178,7 +186,10 @@ class _Engine(QMCEngine):
         depend on it."""
         n = _sample_count(n)
         threads = _threads(workers)
-        sample = self._random(n, workers=threads) if n else np.empty((0, self.d))
+        if n == 0 or self.d == 0:
+            sample = np.empty((n, self.d))
+        else:
+            sample = self._random(n, workers=threads)
         if self.optimization_method is not None and len(sample) > 1:
             sample = self.optimization_method(sample)
         self.num_generated += len(sample)
@@ -284,7 +295,7 @@ class Sobol(_Sequence):
     MAXDIM = _MaxDim()
 
     def __init__(self, d, *, scramble=True, bits=None, seed=None, optimization=None, rng=None, randomize=None):
-        bits = 30 if bits is None else _integer("bits", bits, 1, 64, "must be an integer in [1, 64] (maximum supported 'bits' is 64)")
+        bits = 30 if bits is None else _integer("bits", bits, 1, 64, "Maximum supported 'bits' is 64 (bits must be an integer in [1, 64])")
         self.bits = bits
         self.maxn = 2**bits
         self._setup_sequence(d, randomize, scramble, "lms", optimization=optimization, seed=seed, rng=rng)
@@ -294,10 +305,10 @@ class Sobol(_Sequence):
     def _check_capacity(self, n):
         total = self.num_generated + n
         if total > self.maxn:
-            raise _invalid("n", n, f"at most 2**{self.bits} = {self.maxn} distinct points can be generated; "
+            raise _invalid("n", n, f"At most 2**{self.bits}={self.maxn} distinct points can be generated. "
                            f"{self.num_generated} points have been previously generated, then: "
-                           f"n = {self.num_generated}+{n} = {total}"
-                           + (". Consider increasing `bits`." if self.bits != 64 else ""))
+                           f"n={self.num_generated}+{n}={total}. "
+                           + ("Consider increasing `bits`." if self.bits != 64 else ""))
 
     def random(self, n=1, *, workers=1):
         n = _sample_count(n)
@@ -319,7 +330,7 @@ class Sobol(_Sequence):
         n = 2**m
         total = self.num_generated + n
         if total & (total - 1) != 0:
-            raise _invalid("m", m, "the balance properties of Sobol' points require n to be a power of 2. "
+            raise _invalid("m", m, "The balance properties of Sobol' points require n to be a power of 2. "
                            f"{self.num_generated} points have been previously generated, then: "
                            f"n={self.num_generated}+2**{m}={total}. If you still want to do this, "
                            "the function 'Sobol.random()' can be used.")
@@ -345,36 +356,80 @@ class Halton(_Sequence):
                            "randomize": None if randomize == "none" else randomize}
 
 
+class CenteredDeprecationWarning(DeprecationWarning, UserWarning):
+    """LatinHypercube(centered=True): scipy 1.10 warns with a UserWarning
+    (the keyword went away in scipy 1.12); this class is both, so filters and
+    pytest.warns for either category catch it."""
+
+
+def _is_prime(p):
+    return p >= 2 and all(p % k for k in range(2, int(p**0.5) + 1))
+
+
 class LatinHypercube(_Engine):
     """Latin hypercube (N-rooks) designs from the registry's "n-rooks".
 
     Same arguments as ``scipy.stats.qmc.LatinHypercube``: each random(n) is
     a fresh design of n points, one in every [j/n, (j+1)/n) of every
-    coordinate; scramble=False (or the older centered=True) puts the points
-    at the centres of their cells. strength=2 (orthogonal-array LHS) is not
-    available.
+    coordinate; scramble=False (or the older, deprecated centered=True) puts
+    the points at the centres of their cells. strength=2 is the
+    orthogonal-array based LHS (Tang 1993, "Orthogonal array-based Latin
+    hypercubes"): n = p**2 for a prime p, d <= p + 1, and every pair of
+    coordinates also puts one point in each of the p x p cells.
     """
 
     _registry_name = "n-rooks"
 
     def __init__(self, d, *, centered=False, scramble=True, strength=1, optimization=None, seed=None, rng=None):
-        self.scramble = _flag("scramble", scramble) and not _flag("centered", centered)
-        strength = _integer("strength", strength, 1, allowed="must be 1 (2 is scipy's orthogonal-array LHS)")
-        if strength == 2:
-            raise NotImplementedError("LatinHypercube(strength=2), the orthogonal-array based LHS, is not "
-                                      "available in stratum; use scipy.stats.qmc.LatinHypercube for it")
-        if strength != 1:
-            raise _invalid("strength", strength, "must be 1 (2 is scipy's orthogonal-array LHS)")
-        self.strength = strength
+        if _flag("centered", centered):
+            warnings.warn("'centered' is deprecated and will be removed in SciPy 1.12. Please use 'scramble' "
+                          "instead. 'centered=True' corresponds to 'scramble=False'.",
+                          CenteredDeprecationWarning, stacklevel=2)
+        self.scramble = _flag("scramble", scramble) and not centered
+        if isinstance(strength, (bool, np.bool_)) or strength not in (1, 2):
+            raise _invalid("strength", strength, f"{strength!r} is not a valid strength. It must be one of {{1, 2}}")
+        self.strength = int(strength)
         self._setup(d, optimization=optimization, seed=seed, rng=rng)
-        self._init_quad = {"d": self.d, "scramble": True, "strength": strength, "optimization": self._optimization_name}
+        self._init_quad = {"d": self.d, "scramble": True, "strength": self.strength,
+                           "optimization": self._optimization_name}
 
-    def _random(self, n=1, *, workers=1):
+    def _design_seed(self):
         # Design k is seeded by (seed, points drawn before it); the first one
         # uses the seed itself, so it equals stratum.points("n-rooks", n, d, seed).
-        seed = self._stratum_seed if self.num_generated == 0 else _mix(self._stratum_seed, self.num_generated)
+        return self._stratum_seed if self.num_generated == 0 else _mix(self._stratum_seed, self.num_generated)
+
+    def _random(self, n=1, *, workers=1):
+        if self.strength == 2:
+            return self._orthogonal_array_lhs(n)
         params = {} if self.scramble else {"centered": 1}
-        return _points(self._registry_name, n, self.d, seed=seed, threads=workers, **params)
+        return _points(self._registry_name, n, self.d, seed=self._design_seed(), threads=workers, **params)
+
+    def _orthogonal_array_lhs(self, n):
+        """Tang (1993): the strength-2 orthogonal array OA(p^2, p+1, p, 2) of
+        Bush (columns a, b, a + k b mod p), its symbols permuted at random per
+        column, each symbol's p rows spread over the p sub-cells by a random
+        Latin hypercube (at the sub-cell centres when scramble=False)."""
+        p = int(np.sqrt(n))
+        while (p + 1) ** 2 <= n:
+            p += 1
+        if p * p != n or not _is_prime(p):
+            below = [q for q in range(max(p, 2), 1, -1) if _is_prime(q)][:1]
+            above = next(q for q in range(p + 1, 2 * p + 3) if _is_prime(q))
+            close = [q * q for q in below + [above]]
+            raise _invalid("n", n, f"n is not the square of a prime number. Close values are {close}")
+        if self.d > p + 1:
+            raise _invalid("n", n, f"n is too small for d. Must be n > (d-1)**2 (d = {self.d})")
+        rng = np.random.default_rng(self._design_seed())
+        a, b = np.divmod(np.arange(n), p)
+        columns = [a, b] + [(a + k * b) % p for k in range(1, p)][: max(self.d - 2, 0)]
+        sample = np.empty((n, self.d))
+        for j in range(self.d):
+            symbols = rng.permutation(p)[columns[j]]
+            order = np.argsort(symbols, kind="stable")  # the p rows of symbol 0, then of symbol 1, ...
+            sub_cells = np.argsort(rng.random((p, p)), axis=1).ravel()  # a random permutation per symbol
+            jitter = rng.random(n) if self.scramble else np.full(n, 0.5)
+            sample[order, j] = (symbols[order] * p + sub_cells + jitter) / n
+        return sample
 
 
 class PoissonDisk(_Engine):
@@ -395,11 +450,11 @@ class PoissonDisk(_Engine):
         if isinstance(radius, (bool, np.bool_)) or not isinstance(radius, (numbers.Real, np.floating, np.integer)) \
                 or not 0 < float(radius) <= 1:
             raise _invalid("radius", radius, "must be a number in (0, 1]")
-        if hypersphere == "surface":
-            raise NotImplementedError("PoissonDisk(hypersphere='surface') is not available in stratum: its "
-                                      "Poisson-disk sampler draws candidates in the annulus volume only")
-        if hypersphere != "volume":
-            raise _invalid("hypersphere", hypersphere, "must be 'volume' ('surface' is not available in stratum)")
+        if hypersphere not in ("volume", "surface"):
+            raise _invalid("hypersphere", hypersphere, f"{hypersphere!r} is not a valid hypersphere sampling method. "
+                           "It must be one of {'volume', 'surface'}")
+        if hypersphere == "surface" and periodic:
+            raise _invalid("periodic", periodic, "periodic=True is available with hypersphere='volume' only")
         self.radius = float(radius)
         self.hypersphere = hypersphere
         self.ncandidates = _integer("ncandidates", ncandidates, 1, allowed="must be a positive integer")
@@ -411,6 +466,8 @@ class PoissonDisk(_Engine):
                            "periodic": self.periodic}
 
     def _maximal_set(self, threads):
+        if self._maximal is None and self.hypersphere == "surface":
+            self._maximal = _surface_poisson_disk(self.d, self.radius, self.ncandidates, self._stratum_seed)
         if self._maximal is None:
             params = {"candidates": self.ncandidates}
             if self.periodic:
@@ -432,6 +489,48 @@ class PoissonDisk(_Engine):
         n = _integer("n", n, 0, allowed="must be a non-negative integer")
         self.num_generated = min(self.num_generated + n, len(self._maximal_set(1)))
         return self
+
+
+def _surface_poisson_disk(d, radius, candidates, seed):
+    """Bridson (2007), "Fast Poisson disk sampling in arbitrary dimensions",
+    with scipy's hypersphere="surface" candidates: uniform on the sphere of
+    radius 1.001 r around the active point. A background grid of cells of
+    side r / sqrt(d) holds at most one point each; the neighbours of a
+    candidate are within ceil(sqrt(d)) cells. Points in generation order."""
+    rng = np.random.default_rng(seed)
+    cell = radius / np.sqrt(d)
+    size = int(np.ceil(1 / cell))
+    if size**d > 1 << 26:
+        raise _invalid("radius", radius, f"too small for hypersphere='surface' in d = {d} (background grid of "
+                       f"{size}^{d} cells; at most 2^26)")
+    reach = int(np.ceil(np.sqrt(d)))
+    offsets = np.stack(np.meshgrid(*[np.arange(-reach, reach + 1)] * d, indexing="ij"), -1).reshape(-1, d)
+    strides = size ** np.arange(d)[::-1]
+    grid = np.full(size**d, -1, dtype=np.int64)
+    points = [rng.random(d)]
+    grid[np.dot(np.minimum((points[0] / cell).astype(np.int64), size - 1), strides)] = 0
+    active = [0]
+    while active:
+        k = int(rng.integers(len(active)))
+        directions = rng.standard_normal((candidates, d))
+        trial = points[active[k]] + 1.001 * radius * directions / np.linalg.norm(directions, axis=1)[:, None]
+        accepted = False
+        for x in trial[np.all((trial >= 0) & (trial < 1), axis=1)]:
+            home = np.minimum((x / cell).astype(np.int64), size - 1)
+            cells = home + offsets
+            cells = cells[np.all((cells >= 0) & (cells < size), axis=1)]
+            near = grid[cells @ strides]
+            near = near[near >= 0]
+            if len(near) and np.min(np.sum((np.asarray([points[i] for i in near]) - x) ** 2, axis=1)) < radius**2:
+                continue
+            grid[home @ strides] = len(points)
+            active.append(len(points))
+            points.append(x)
+            accepted = True
+        if not accepted:
+            active[k] = active[-1]
+            active.pop()
+    return np.asarray(points).reshape(-1, d)
 
 
 _DISCREPANCY_METHODS = ("CD", "WD", "MD", "L2-star")

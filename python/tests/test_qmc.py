@@ -120,7 +120,7 @@ def test_sobol_random_base2_and_power_of_two_rules():
         qmc.Sobol(2).random(16)  # no warning for a power of 2
     small = qmc.Sobol(2, scramble=False, bits=4)
     small.random(16)
-    with pytest.raises(ValueError, match=r"n = 1.*2\*\*4 = 16"):
+    with pytest.raises(ValueError, match=r"n = 1: At most 2\*\*4=16 distinct points can be generated"):
         small.random(1)
 
 
@@ -272,7 +272,8 @@ def test_qmc_quad_accepts_our_engines():
 @pytest.mark.parametrize(
     "make, error, word",
     [
-        (lambda: qmc.Sobol(0), ValueError, "d = 0"),
+        (lambda: qmc.Sobol(-1), ValueError, "d = -1"),
+        (lambda: qmc.Sobol(3668), ValueError, "Maximum supported dimensionality is 3667"),
         (lambda: qmc.Sobol(2.5), ValueError, "d = 2.5"),
         (lambda: qmc.Sobol(2, bits=65), ValueError, "bits = 65"),
         (lambda: qmc.Sobol(2, seed=-1), ValueError, "seed = -1"),
@@ -288,15 +289,52 @@ def test_qmc_quad_accepts_our_engines():
         (lambda: qmc.Halton(2, optimization="best"), ValueError, "optimization = 'best'"),
         (lambda: qmc.Halton(10**6), ValueError, "d = 1000000"),
         (lambda: qmc.LatinHypercube(2, strength=3), ValueError, "strength = 3"),
-        (lambda: qmc.LatinHypercube(2, strength=2), NotImplementedError, "strength=2"),
+        (lambda: qmc.LatinHypercube(2, strength=2).random(16), ValueError, "n is not the square of a prime"),
+        (lambda: qmc.LatinHypercube(5, strength=2).random(9), ValueError, "n is too small for d"),
         (lambda: qmc.LatinHypercube(2, centered="no"), ValueError, "centered"),
         (lambda: qmc.PoissonDisk(2, radius=0), ValueError, "radius = 0"),
         (lambda: qmc.PoissonDisk(2, radius=-0.1), ValueError, "radius = -0.1"),
         (lambda: qmc.PoissonDisk(2, ncandidates=0), ValueError, "ncandidates = 0"),
-        (lambda: qmc.PoissonDisk(2, hypersphere="surface"), NotImplementedError, "surface"),
         (lambda: qmc.PoissonDisk(2, hypersphere="ball"), ValueError, "hypersphere = 'ball'"),
     ],
 )
 def test_errors_name_the_argument(make, error, word):
     with pytest.raises(error, match=word):
         make()
+
+
+def test_zero_dimensions_give_empty_samples():
+    for engine in (qmc.Sobol(0), qmc.Halton(0), qmc.LatinHypercube(0), qmc.PoissonDisk(0)):
+        assert quiet(engine.random, 4).shape == (4, 0)
+    normal = scipy_qmc.MultivariateNormalQMC(mean=np.zeros(0), engine=qmc.Sobol(0, scramble=False))
+    assert normal.random(3).shape == (3, 0)
+
+
+@pytest.mark.parametrize("scramble", [True, False])
+def test_orthogonal_array_lhs_is_strength_two(scramble):
+    # Tang (1993): n = 7^2 points in d = 8 = p + 1 dimensions; every coordinate
+    # a Latin hypercube, every pair of coordinates one point per 7 x 7 cell.
+    x = qmc.LatinHypercube(8, strength=2, scramble=scramble, seed=4).random(49)
+    assert np.array_equal(np.sort(np.floor(x * 49), axis=0), np.tile(np.arange(49.0)[:, None], (1, 8)))
+    cells = np.floor(x * 7).astype(int)
+    for i in range(8):
+        for j in range(i + 1, 8):
+            assert len(set(zip(cells[:, i], cells[:, j]))) == 49
+    if not scramble:
+        assert np.allclose((x * 49) % 1, 0.5)
+
+
+def test_centered_warns_as_scipy_does():
+    with pytest.warns(DeprecationWarning, match="'centered' is deprecated"):
+        qmc.LatinHypercube(2, centered=True)
+    with pytest.warns(UserWarning, match="'centered' is deprecated"):
+        qmc.LatinHypercube(2, centered=True)
+
+
+@pytest.mark.parametrize("d", [1, 2, 3])
+def test_surface_poisson_disk_keeps_the_radius(d):
+    engine = qmc.PoissonDisk(d, radius=0.15, hypersphere="surface", seed=2)
+    x = engine.fill_space()
+    gaps = np.sqrt(((x[:, None, :] - x[None, :, :]) ** 2).sum(-1))[np.triu_indices(len(x), 1)]
+    assert len(x) > 1 and gaps.min() >= 0.15 and np.all((x >= 0) & (x < 1))
+    assert np.array_equal(qmc.PoissonDisk(d, radius=0.15, hypersphere="surface", seed=2).fill_space(), x)
