@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "stratum/util/error.hpp"
+#include "stratum/util/host_device.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum {
@@ -93,14 +94,14 @@ inline const std::vector<u128>& digit_weights(std::uint32_t base) {
 /// n < 2^(64 − ⌈log2 d⌉)); a hardware division above.
 class FastDivider {
  public:
-  constexpr FastDivider() noexcept = default;
-  explicit constexpr FastDivider(std::uint64_t divisor) noexcept
+  STRATUM_HOST_DEVICE constexpr FastDivider() noexcept = default;
+  STRATUM_HOST_DEVICE explicit constexpr FastDivider(std::uint64_t divisor) noexcept
       : divisor_(divisor),
         magic_(~std::uint64_t{0} / divisor + 1),
         limit_(std::uint64_t{1} << (64 - std::bit_width(divisor - 1))) {}
-  constexpr std::uint64_t divisor() const noexcept { return divisor_; }
-  constexpr std::uint64_t limit() const noexcept { return limit_; }
-  constexpr std::uint64_t quotient(std::uint64_t n) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t divisor() const noexcept { return divisor_; }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t limit() const noexcept { return limit_; }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t quotient(std::uint64_t n) const noexcept {
     if (n < limit_) return static_cast<std::uint64_t>((static_cast<u128>(n) * magic_) >> 64);
     return n / divisor_;
   }
@@ -112,7 +113,7 @@ class FastDivider {
 };
 
 /// A 64-bit binary fraction as a double in [0, 1): its 53 leading bits.
-constexpr double fraction_to_double(std::uint64_t fraction) noexcept {
+STRATUM_HOST_DEVICE constexpr double fraction_to_double(std::uint64_t fraction) noexcept {
   return static_cast<double>(static_cast<std::int64_t>(fraction >> 11)) * 0x1.0p-53;
 }
 

@@ -118,19 +118,19 @@ class BaseBOwenScrambler {
     bool prime;
   };
 
-  static constexpr bool is_prime(std::uint32_t n) noexcept {
+  STRATUM_HOST_DEVICE static constexpr bool is_prime(std::uint32_t n) noexcept {
     for (std::uint32_t f = 2; f * f <= n; ++f)
       if (n % f == 0) return false;
     return n >= 2;
   }
 
   // hash64(position key, prefix), the position key pre-mixed.
-  static constexpr std::uint64_t node_word(std::uint64_t mixed_key, std::uint64_t prefix) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t node_word(std::uint64_t mixed_key, std::uint64_t prefix) noexcept {
     return mix64((mixed_key ^ (prefix * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + golden);
   }
 
   // Image of `digit` under the permutation of the node whose word is w.
-  static std::uint32_t node_image(const Dimension& d, std::uint64_t w, std::uint32_t digit) noexcept {
+  STRATUM_HOST_DEVICE static std::uint32_t node_image(const Dimension& d, std::uint64_t w, std::uint32_t digit) noexcept {
     const std::uint32_t b = d.base;
     if (b == 2) return digit ^ static_cast<std::uint32_t>(w >> 63);
     if (b <= 24) {

@@ -29,12 +29,12 @@ class Halton {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "Halton supports 1 to 1024 dimensions (one prime base each)");
   }
-  unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
   /// Base of dimension `dim` (the dim-th prime).
-  static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim); }
+  STRATUM_HOST_DEVICE static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim); }
 
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim]));
   }
 
@@ -54,13 +54,13 @@ class Hammersley {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "Hammersley supports 1 to 1025 dimensions");
   }
-  std::uint64_t count() const noexcept { return count_; }
-  unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE std::uint64_t count() const noexcept { return count_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
   /// Base of dimension dim ≥ 1 (dimension 0 is i/N).
-  static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim - 1); }
+  STRATUM_HOST_DEVICE static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim - 1); }
 
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     if (dim == 0) return to_unit<Real>(static_cast<double>(index) / static_cast<double>(count_));
     return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim - 1]));
   }

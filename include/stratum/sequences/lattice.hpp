@@ -31,6 +31,7 @@
 #include <string>
 
 #include "stratum/util/error.hpp"
+#include "stratum/util/host_device.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum {
@@ -55,18 +56,18 @@ class Rank1Lattice {
     }
   }
 
-  std::uint64_t count() const noexcept { return count_; }
-  unsigned dimensions() const noexcept { return dimensions_; }
-  std::uint64_t generator(unsigned dim) const noexcept { return count_ == 1 ? 1 : generator_[dim]; }
+  STRATUM_HOST_DEVICE std::uint64_t count() const noexcept { return count_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE std::uint64_t generator(unsigned dim) const noexcept { return count_ == 1 ? 1 : generator_[dim]; }
 
   /// (index · z_dim) mod n: the point's coordinate times n, exactly.
-  constexpr std::uint64_t numerator(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t numerator(std::uint64_t index, unsigned dim) const noexcept {
     return static_cast<std::uint64_t>(static_cast<unsigned __int128>(index % count_) * generator_[dim] % count_);
   }
 
   /// frac(index · z_dim / n), correctly rounded for n < 2^53.
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     const double value = static_cast<double>(numerator(index, dim)) / static_cast<double>(count_);
     return to_unit<Real>(std::min(value, one_minus_epsilon_double));
   }

@@ -103,21 +103,21 @@ class Pmj02 {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "pmj02 supports 1 to 64 dimensions (pairs (0,1), (2,3), ... of independent pmj02 sequences)");
   }
-  unsigned dimensions() const noexcept { return dimensions_; }
-  std::uint64_t seed() const noexcept { return seed_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE std::uint64_t seed() const noexcept { return seed_; }
 
   /// Column c of the generator matrix of coordinate 0 (x) or 1 (y), as a
   /// mask of rows (bit r: digit r + 1).
-  static constexpr std::uint64_t generator_column(unsigned coordinate, unsigned c) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t generator_column(unsigned coordinate, unsigned c) noexcept {
     return detail::pmj02_columns[coordinate][c];
   }
   /// x_m of coordinate 0 or 1 (see the header comment).
-  static constexpr std::uint64_t xor_value(unsigned coordinate, unsigned m) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t xor_value(unsigned coordinate, unsigned m) noexcept {
     return detail::pmj02_xors[coordinate][m];
   }
 
   /// The coordinate as a 64-bit binary fraction (bit 63 is the first digit).
-  constexpr std::uint64_t sample_bits(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t sample_bits(std::uint64_t index, unsigned dim) const noexcept {
     const unsigned pair = dim / 2;
     if (pair != 0) index = shuffle(index, hash64(seed_, 0x706d6a3032736875ULL, pair));
     return keyed_bits(index, dim & 1u, digit_key(seed_, dim));
@@ -127,7 +127,7 @@ class Pmj02 {
   /// many points of one dimension (the renderer's per-pixel sets): with it,
   /// keyed_bits(index, dim & 1, digit_key(seed, dim)) = sample_bits(index, dim)
   /// for dimensions 0 and 1 (pair 0, read without a shuffle).
-  static constexpr std::uint64_t digit_key(std::uint64_t seed, unsigned dim) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t digit_key(std::uint64_t seed, unsigned dim) noexcept {
     return hash64(hash64(seed, 0x706d6a3032646967ULL, dim));
   }
   /// Digits of point `index` in coordinate 0 or 1 of a pair's sequence:
@@ -135,7 +135,7 @@ class Pmj02 {
   /// (those of the link before) from its own random word hash64(k, link) and
   /// flips digit m+1 relative to the next link. `key` is hash64(k)
   /// (digit_key), so each word is one hash64_extend.
-  static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate, std::uint64_t key) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate, std::uint64_t key) noexcept {
     std::uint64_t value = 0;
     std::uint64_t flips = 0;
     std::uint64_t unset = ~std::uint64_t{0};  // digits still to fill (high bits)
@@ -152,7 +152,7 @@ class Pmj02 {
   }
 
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     const std::uint64_t bits = sample_bits(index, dim);
     if constexpr (sizeof(Real) == sizeof(float)) return bits_to_float(bits);
     else return bits_to_double(bits);
@@ -160,14 +160,14 @@ class Pmj02 {
 
   /// The index at which pair `pair` ≥ 1 reads its sequence: a seeded
   /// bijection of each block [2^k, 2^(k+1)) onto itself (0 and 1 are fixed).
-  constexpr std::uint64_t shuffled_index(std::uint64_t index, unsigned pair) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t shuffled_index(std::uint64_t index, unsigned pair) const noexcept {
     return pair == 0 ? index : shuffle(index, hash64(seed_, 0x706d6a3032736875ULL, pair));
   }
 
  private:
   /// Bijection of [2^k, 2^(k+1)) for k = msb(index): add, multiply by odd
   /// and xor-shift modulo 2^k, each invertible, with seeded constants.
-  static constexpr std::uint64_t shuffle(std::uint64_t index, std::uint64_t key) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t shuffle(std::uint64_t index, std::uint64_t key) noexcept {
     if (index < 2) return index;
     const unsigned k = 63u - static_cast<unsigned>(std::countl_zero(index));
     const std::uint64_t mask = (std::uint64_t{1} << k) - 1;

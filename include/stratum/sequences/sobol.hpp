@@ -79,7 +79,7 @@ class Sobol {
   }
 
   /// Gray code of i: consecutive codes differ in bit ctz(i + 1).
-  static constexpr std::uint64_t gray_code(std::uint64_t i) noexcept { return i ^ (i >> 1); }
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t gray_code(std::uint64_t i) noexcept { return i ^ (i >> 1); }
 
   /// Index bits the generator matrix multiplies for point `index` (the Gray
   /// code in Gray order, the index itself in natural order).
@@ -141,7 +141,7 @@ class Sobol {
 
   /// Top 53 (double) or 24 (float) bits of a 64-bit fraction, exactly, in [0, 1).
   template <class Real>
-  static constexpr Real bits_to_unit(std::uint64_t word) noexcept {
+  STRATUM_HOST_DEVICE static constexpr Real bits_to_unit(std::uint64_t word) noexcept {
     if constexpr (sizeof(Real) == sizeof(float))
       return bits_to_float(word);
     else

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "stratum/util/host_device.hpp"
 namespace stratum {
 
 /// How many primes `prime(i)` provides (the 1024th prime is 8161).
@@ -27,6 +28,6 @@ inline constexpr std::array<std::uint32_t, prime_count> primes = make_primes();
 }  // namespace detail
 
 /// The i-th prime, counting from 0: prime(0) = 2, prime(1) = 3, ...
-constexpr std::uint32_t prime(std::size_t i) noexcept { return detail::primes[i]; }
+STRATUM_HOST_DEVICE constexpr std::uint32_t prime(std::size_t i) noexcept { return detail::primes[i]; }
 
 }  // namespace stratum
