@@ -101,7 +101,7 @@ class LinearMatrixScramble {
     /// scramble the direction numbers once instead of every point).
     STRATUM_HOST_DEVICE constexpr std::uint64_t linear(std::uint64_t x) const noexcept {
       std::uint64_t y = 0;
-      for (; x != 0; x &= x - 1) y ^= column(static_cast<unsigned>(std::countr_zero(x)));
+      for (; x != 0; x &= x - 1) y ^= column(static_cast<unsigned>(countr_zero64(x)));
       return y;
     }
     STRATUM_HOST_DEVICE constexpr std::uint64_t shift() const noexcept { return shift_; }

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "stratum/sequences/radical_inverse.hpp"
 #include "stratum/util/primes.hpp"
@@ -13,11 +14,26 @@ namespace stratum {
 
 namespace detail {
 /// radical_inverse_reciprocal of every prime base, computed at compile time.
-inline constexpr std::array<std::uint64_t, prime_count> prime_reciprocals = [] {
+constexpr std::array<std::uint64_t, prime_count> make_prime_reciprocals() {
+  const std::array<std::uint32_t, prime_count> primes = make_primes();
   std::array<std::uint64_t, prime_count> table{};
-  for (std::size_t i = 0; i < prime_count; ++i) table[i] = radical_inverse_reciprocal(prime(i));
+  for (std::size_t i = 0; i < prime_count; ++i) table[i] = radical_inverse_reciprocal(primes[i]);
   return table;
-}();
+}
+inline constexpr std::array<std::uint64_t, prime_count> prime_reciprocals = make_prime_reciprocals();
+#if defined(__CUDACC__)
+STRATUM_DEVICE_TABLE std::array<std::uint64_t, prime_count> device_prime_reciprocals = make_prime_reciprocals();
+#endif
+
+/// radical_inverse_reciprocal(prime(i)), from the table of the side that runs.
+STRATUM_HOST_DEVICE constexpr std::uint64_t prime_reciprocal(std::size_t i) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (std::is_constant_evaluated()) return radical_inverse_reciprocal(prime(i));
+  return device_prime_reciprocals[i];
+#else
+  return prime_reciprocals[i];
+#endif
+}
 }  // namespace detail
 
 class Halton {
@@ -35,7 +51,7 @@ class Halton {
 
   template <class Real = double>
   STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim]));
+    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocal(dim)));
   }
 
  private:
@@ -62,7 +78,7 @@ class Hammersley {
   template <class Real = double>
   STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     if (dim == 0) return to_unit<Real>(static_cast<double>(index) / static_cast<double>(count_));
-    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim - 1]));
+    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocal(dim - 1)));
   }
 
  private:

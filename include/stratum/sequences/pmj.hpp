@@ -45,7 +45,9 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <type_traits>
 
+#include "stratum/util/bits.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -91,6 +93,30 @@ constexpr std::array<std::array<std::uint64_t, 64>, 2> pmj02_xor_values() {
 
 inline constexpr auto pmj02_columns = pmj02_generator_columns();
 inline constexpr auto pmj02_xors = pmj02_xor_values();
+#if defined(__CUDACC__)
+STRATUM_DEVICE_TABLE std::array<std::array<std::uint64_t, 64>, 2> device_pmj02_columns = pmj02_generator_columns();
+STRATUM_DEVICE_TABLE std::array<std::array<std::uint64_t, 64>, 2> device_pmj02_xors = pmj02_xor_values();
+#endif
+
+/// Column c of coordinate `coordinate`'s generator matrix, from the table of
+/// the side that runs (compile-time evaluation on the device recomputes).
+STRATUM_HOST_DEVICE constexpr std::uint64_t pmj02_column(unsigned coordinate, unsigned c) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (std::is_constant_evaluated()) return pmj02_generator_columns()[coordinate][c];
+  return device_pmj02_columns[coordinate][c];
+#else
+  return pmj02_columns[coordinate][c];
+#endif
+}
+/// x_m of coordinate `coordinate`, likewise.
+STRATUM_HOST_DEVICE constexpr std::uint64_t pmj02_xor(unsigned coordinate, unsigned m) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (std::is_constant_evaluated()) return pmj02_xor_values()[coordinate][m];
+  return device_pmj02_xors[coordinate][m];
+#else
+  return pmj02_xors[coordinate][m];
+#endif
+}
 
 }  // namespace detail
 
@@ -109,11 +135,11 @@ class Pmj02 {
   /// Column c of the generator matrix of coordinate 0 (x) or 1 (y), as a
   /// mask of rows (bit r: digit r + 1).
   STRATUM_HOST_DEVICE static constexpr std::uint64_t generator_column(unsigned coordinate, unsigned c) noexcept {
-    return detail::pmj02_columns[coordinate][c];
+    return detail::pmj02_column(coordinate, c);
   }
   /// x_m of coordinate 0 or 1 (see the header comment).
   STRATUM_HOST_DEVICE static constexpr std::uint64_t xor_value(unsigned coordinate, unsigned m) noexcept {
-    return detail::pmj02_xors[coordinate][m];
+    return detail::pmj02_xor(coordinate, m);
   }
 
   /// The coordinate as a 64-bit binary fraction (bit 63 is the first digit).
@@ -140,12 +166,12 @@ class Pmj02 {
     std::uint64_t flips = 0;
     std::uint64_t unset = ~std::uint64_t{0};  // digits still to fill (high bits)
     while (index != 0) {
-      const unsigned m = 63u - static_cast<unsigned>(std::countl_zero(index));
+      const unsigned m = 63u - static_cast<unsigned>(countl_zero64(index));
       const std::uint64_t deeper = m == 63 ? 0 : (~std::uint64_t{0} >> (m + 1));  // digits m+2 …
       value |= hash64_extend(key, index) & deeper & unset;
       flips |= std::uint64_t{1} << (63 - m);  // digit m+1
       unset &= ~deeper;
-      index = (index ^ (std::uint64_t{1} << m)) ^ detail::pmj02_xors[coordinate][m];
+      index = (index ^ (std::uint64_t{1} << m)) ^ detail::pmj02_xor(coordinate, m);
     }
     value |= hash64_extend(key, 0) & unset;
     return value ^ flips;
@@ -169,7 +195,7 @@ class Pmj02 {
   /// and xor-shift modulo 2^k, each invertible, with seeded constants.
   STRATUM_HOST_DEVICE static constexpr std::uint64_t shuffle(std::uint64_t index, std::uint64_t key) noexcept {
     if (index < 2) return index;
-    const unsigned k = 63u - static_cast<unsigned>(std::countl_zero(index));
+    const unsigned k = 63u - static_cast<unsigned>(countl_zero64(index));
     const std::uint64_t mask = (std::uint64_t{1} << k) - 1;
     const std::uint64_t a = hash64(key, k), b = hash64(a, k) | 1u, c = hash64(b, k) | 1u;
     const unsigned shift = (k + 1) / 2;

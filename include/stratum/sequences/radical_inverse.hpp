@@ -20,7 +20,7 @@ STRATUM_HOST_DEVICE constexpr std::uint64_t radical_inverse_reciprocal(std::uint
 STRATUM_HOST_DEVICE constexpr double radical_inverse(std::uint32_t base, std::uint64_t index, std::uint64_t reciprocal) noexcept {
   if (base == 2) return static_cast<double>(reverse_bits64(index) >> 11) * 0x1.0p-53;
   const std::uint64_t limit = (std::uint64_t{1} << 63) / base;
-  const std::uint64_t exact_below = std::uint64_t{1} << (64 - std::bit_width(base - 1));
+  const std::uint64_t exact_below = std::uint64_t{1} << (64 - bit_width64(base - 1));
   std::uint64_t reversed = 0;
   std::uint64_t power = 1;
   while (index != 0 && power <= limit) {

@@ -33,4 +33,22 @@ STRATUM_HOST_DEVICE constexpr std::uint64_t reverse_bits64(std::uint64_t v) noex
   return v;
 }
 
+/// std::countl_zero, std::countr_zero and std::bit_width of a 64-bit word,
+/// also in device code: there libstdc++'s versions, inside a loop, compiled
+/// to an endless loop (found by tests/cuda/check_ptx.py); nvcc's intrinsics
+/// give the same numbers.
+STRATUM_HOST_DEVICE constexpr int countl_zero64(std::uint64_t v) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (!std::is_constant_evaluated()) return __clzll(static_cast<long long>(v));
+#endif
+  return std::countl_zero(v);
+}
+STRATUM_HOST_DEVICE constexpr int countr_zero64(std::uint64_t v) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (!std::is_constant_evaluated()) return v == 0 ? 64 : __ffsll(static_cast<long long>(v)) - 1;
+#endif
+  return std::countr_zero(v);
+}
+STRATUM_HOST_DEVICE constexpr int bit_width64(std::uint64_t v) noexcept { return 64 - countl_zero64(v); }
+
 }  // namespace stratum

@@ -12,7 +12,8 @@ inline constexpr float one_minus_epsilon_float = 0x1.fffffep-1f;
 /// Rounds a double in [0, 1) to a float, never reaching 1 (round-to-nearest
 /// could turn 1 - 2^-30 into 1.0f).
 STRATUM_HOST_DEVICE constexpr float to_unit_float(double value) noexcept {
-  return std::min(static_cast<float>(value), one_minus_epsilon_float);
+  const float rounded = static_cast<float>(value);
+  return one_minus_epsilon_float < rounded ? one_minus_epsilon_float : rounded;  // std::min, by value
 }
 
 /// A sample converted to the caller's precision.
