@@ -40,19 +40,20 @@
 
 #include "stratum/util/bits.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/util/host_device.hpp"
 
 namespace stratum {
 
 namespace base2_detail {
 
 /// Key of dimension dim: output dim + 1 of the SplitMix64 stream at `base`.
-constexpr std::uint64_t dimension_key(std::uint64_t base, unsigned dim) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t dimension_key(std::uint64_t base, unsigned dim) noexcept {
   return mix64(base + (static_cast<std::uint64_t>(dim) + 1) * 0x9e3779b97f4a7c15ULL);
 }
 
 /// Random word for (key, counter) from a pre-mixed key (hash64's structure
 /// with its first mixing step done once per dimension).
-constexpr std::uint64_t keyed_word(std::uint64_t mixed_key, std::uint64_t counter) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t keyed_word(std::uint64_t mixed_key, std::uint64_t counter) noexcept {
   return mix64((mixed_key ^ (counter * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + 0x9e3779b97f4a7c15ULL);
 }
 
@@ -60,18 +61,18 @@ constexpr std::uint64_t keyed_word(std::uint64_t mixed_key, std::uint64_t counte
 
 /// The identity: the unscrambled construction.
 struct NoRandomizer {
-  constexpr std::uint64_t operator()(std::uint64_t bits, unsigned /*dim*/) const noexcept { return bits; }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned /*dim*/) const noexcept { return bits; }
 };
 
 /// Digital shift in base 2: x ⊕ s_dim with s_dim uniform on 64-bit words.
 class DigitalShift {
  public:
-  explicit constexpr DigitalShift(std::uint64_t seed) noexcept : base_(hash64(seed, 0x786f72ULL /* "xor" */)) {}
+  STRATUM_HOST_DEVICE explicit constexpr DigitalShift(std::uint64_t seed) noexcept : base_(hash64(seed, 0x786f72ULL /* "xor" */)) {}
 
   /// The word XORed into dimension dim.
-  constexpr std::uint64_t shift(unsigned dim) const noexcept { return base2_detail::dimension_key(base_, dim); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t shift(unsigned dim) const noexcept { return base2_detail::dimension_key(base_, dim); }
 
-  constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return bits ^ shift(dim); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return bits ^ shift(dim); }
 
  private:
   std::uint64_t base_;
@@ -88,35 +89,35 @@ class LinearMatrixScramble {
   /// L and s of one dimension; cheap to copy.
   class Dimension {
    public:
-    explicit constexpr Dimension(std::uint64_t key) noexcept
+    STRATUM_HOST_DEVICE explicit constexpr Dimension(std::uint64_t key) noexcept
         : mixed_(mix64(key + 0x9e3779b97f4a7c15ULL)), shift_(base2_detail::keyed_word(mixed_, 64)) {}
 
     /// Column p of L: the image of the word with only bit p set.
-    constexpr std::uint64_t column(unsigned p) const noexcept {
+    STRATUM_HOST_DEVICE constexpr std::uint64_t column(unsigned p) const noexcept {
       const std::uint64_t below = (std::uint64_t{1} << p) - 1;
       return (std::uint64_t{1} << p) | (base2_detail::keyed_word(mixed_, p) & below);
     }
     /// L·x over GF(2), without the shift (linear, so bulk generators can
     /// scramble the direction numbers once instead of every point).
-    constexpr std::uint64_t linear(std::uint64_t x) const noexcept {
+    STRATUM_HOST_DEVICE constexpr std::uint64_t linear(std::uint64_t x) const noexcept {
       std::uint64_t y = 0;
-      for (; x != 0; x &= x - 1) y ^= column(static_cast<unsigned>(std::countr_zero(x)));
+      for (; x != 0; x &= x - 1) y ^= column(static_cast<unsigned>(countr_zero64(x)));
       return y;
     }
-    constexpr std::uint64_t shift() const noexcept { return shift_; }
-    constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept { return linear(bits) ^ shift_; }
+    STRATUM_HOST_DEVICE constexpr std::uint64_t shift() const noexcept { return shift_; }
+    STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept { return linear(bits) ^ shift_; }
 
    private:
     std::uint64_t mixed_;
     std::uint64_t shift_;
   };
 
-  explicit constexpr LinearMatrixScramble(std::uint64_t seed) noexcept : base_(hash64(seed, 0x6c6d73ULL /* "lms" */)) {}
+  STRATUM_HOST_DEVICE explicit constexpr LinearMatrixScramble(std::uint64_t seed) noexcept : base_(hash64(seed, 0x6c6d73ULL /* "lms" */)) {}
 
-  constexpr Dimension dimension(unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return Dimension(base2_detail::dimension_key(base_, dim));
   }
-  constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
 
  private:
   std::uint64_t base_;
@@ -133,14 +134,14 @@ class OwenScrambler {
  public:
   class Dimension {
    public:
-    explicit constexpr Dimension(std::uint64_t key) noexcept : mixed_(mix64(key + 0x9e3779b97f4a7c15ULL)) {}
+    STRATUM_HOST_DEVICE explicit constexpr Dimension(std::uint64_t key) noexcept : mixed_(mix64(key + 0x9e3779b97f4a7c15ULL)) {}
 
     /// The random flip of the node at `depth` (0 = root: the first digit)
     /// whose higher digits are `prefix` (depth bits).
-    constexpr bool flip(unsigned depth, std::uint64_t prefix) const noexcept {
+    STRATUM_HOST_DEVICE constexpr bool flip(unsigned depth, std::uint64_t prefix) const noexcept {
       return (base2_detail::keyed_word(mixed_, prefix | (std::uint64_t{1} << depth)) >> 63) != 0;
     }
-    constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept {
+    STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept {
       std::uint64_t flips = 0;
       for (unsigned depth = 0; depth < 64; ++depth) {
         const std::uint64_t prefix = depth == 0 ? 0 : bits >> (64 - depth);
@@ -153,12 +154,12 @@ class OwenScrambler {
     std::uint64_t mixed_;
   };
 
-  explicit constexpr OwenScrambler(std::uint64_t seed) noexcept : base_(hash64(seed, 0x6f77656eULL /* "owen" */)) {}
+  STRATUM_HOST_DEVICE explicit constexpr OwenScrambler(std::uint64_t seed) noexcept : base_(hash64(seed, 0x6f77656eULL /* "owen" */)) {}
 
-  constexpr Dimension dimension(unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return Dimension(base2_detail::dimension_key(base_, dim));
   }
-  constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
 
  private:
   std::uint64_t base_;
@@ -187,22 +188,22 @@ class HashOwenScrambler {
 
   class Dimension {
    public:
-    explicit constexpr Dimension(std::uint64_t key) noexcept
+    STRATUM_HOST_DEVICE explicit constexpr Dimension(std::uint64_t key) noexcept
         : add_(key), multiply_((key & 0xffffffff00000000ULL) | ((key & 0xffffffffULL) >> 16) | 1) {}
 
     /// The scramble on a bit-reversed word (returns a bit-reversed word).
-    constexpr std::uint64_t scramble_reversed(std::uint64_t r) const noexcept {
+    STRATUM_HOST_DEVICE constexpr std::uint64_t scramble_reversed(std::uint64_t r) const noexcept {
       return HashOwenScrambler::scramble_reversed(r, add_, multiply_);
     }
-    constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept {
+    STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept {
       return reverse_bits64(scramble_reversed(reverse_bits64(bits)));
     }
     /// The 32-bit seed whose published scramble gives the top 32 digits.
-    constexpr std::uint32_t seed32() const noexcept { return static_cast<std::uint32_t>(add_); }
+    STRATUM_HOST_DEVICE constexpr std::uint32_t seed32() const noexcept { return static_cast<std::uint32_t>(add_); }
     /// The dimension's constants in the steps (for bulk code that runs them
     /// on vectors of words).
-    constexpr std::uint64_t addend() const noexcept { return add_; }
-    constexpr std::uint64_t multiplier() const noexcept { return multiply_; }
+    STRATUM_HOST_DEVICE constexpr std::uint64_t addend() const noexcept { return add_; }
+    STRATUM_HOST_DEVICE constexpr std::uint64_t multiplier() const noexcept { return multiply_; }
 
    private:
     std::uint64_t add_;
@@ -211,7 +212,7 @@ class HashOwenScrambler {
 
   /// The steps on a bit-reversed word r with a dimension's addend and
   /// (odd) multiplier: the whole hash, in one place.
-  static constexpr std::uint64_t scramble_reversed(std::uint64_t r, std::uint64_t addend,
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t scramble_reversed(std::uint64_t r, std::uint64_t addend,
                                                    std::uint64_t multiplier) noexcept {
     r ^= r * k1;
     r += addend;
@@ -225,18 +226,18 @@ class HashOwenScrambler {
   /// dimension(dim) derives the others on each call.
   static constexpr unsigned cached_dimensions = 16;
 
-  explicit constexpr HashOwenScrambler(std::uint64_t seed) noexcept
+  STRATUM_HOST_DEVICE explicit constexpr HashOwenScrambler(std::uint64_t seed) noexcept
       : base_(hash64(seed, 0x6f68617368ULL /* "ohash" */)),
         cache_(bind_first(base_, std::make_index_sequence<cached_dimensions>{})) {}
 
-  constexpr Dimension dimension(unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return dim < cached_dimensions ? cache_[dim] : Dimension(base2_detail::dimension_key(base_, dim));
   }
-  constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
 
  private:
   template <std::size_t... dims>
-  static constexpr std::array<Dimension, sizeof...(dims)> bind_first(std::uint64_t base,
+  STRATUM_HOST_DEVICE static constexpr std::array<Dimension, sizeof...(dims)> bind_first(std::uint64_t base,
                                                                      std::index_sequence<dims...>) noexcept {
     return {Dimension(base2_detail::dimension_key(base, static_cast<unsigned>(dims)))...};
   }

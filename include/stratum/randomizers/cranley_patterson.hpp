@@ -8,20 +8,21 @@
 #include <cstdint>
 
 #include "stratum/util/hash.hpp"
+#include "stratum/util/host_device.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum {
 
 class CranleyPattersonRotation {
  public:
-  explicit constexpr CranleyPattersonRotation(std::uint64_t seed) noexcept : seed_(seed) {}
+  STRATUM_HOST_DEVICE explicit constexpr CranleyPattersonRotation(std::uint64_t seed) noexcept : seed_(seed) {}
 
   /// The shift of dimension dim: uniform in [0, 1), a function of (seed, dim).
-  constexpr double shift(unsigned dim) const noexcept { return uniform01<double>(hash64(seed_, 0x43505f524f54ULL), dim); }
+  STRATUM_HOST_DEVICE constexpr double shift(unsigned dim) const noexcept { return uniform01<double>(hash64(seed_, 0x43505f524f54ULL), dim); }
 
   /// (value + shift(dim)) mod 1, kept inside [0, 1).
   template <class Real = double>
-  constexpr Real operator()(double value, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real operator()(double value, unsigned dim) const noexcept {
     double rotated = value + shift(dim);
     if (rotated >= 1.0) rotated -= 1.0;
     return to_unit<Real>(rotated < one_minus_epsilon_double ? rotated : one_minus_epsilon_double);

@@ -32,10 +32,10 @@ namespace digits_detail {
 /// The permutations of RandomDigitPermutations (see digits.hpp for Rule).
 class ShuffledPermutationRule {
  public:
-  explicit constexpr ShuffledPermutationRule(std::uint64_t seed) noexcept
+  STRATUM_HOST_DEVICE explicit constexpr ShuffledPermutationRule(std::uint64_t seed) noexcept
       : key_(hash64(seed, 0x7065726d757465ULL /* "permute" */)) {}
 
-  std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base, std::uint32_t digit) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base, std::uint32_t digit) const noexcept {
     // Trace the digit's final position back through swaps 1, 2, …, b−1.
     const std::uint64_t key = hash64_extend(dimension_key(dim), position);
     std::uint32_t at = digit;
@@ -48,10 +48,10 @@ class ShuffledPermutationRule {
 
   /// The hash chain of (seed, dim): position `position`'s key is
   /// hash64_extend(dimension_key(dim), position) (= hash64(key, dim, position)).
-  constexpr std::uint64_t dimension_key(unsigned dim) const noexcept { return hash64(key_, dim); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t dimension_key(unsigned dim) const noexcept { return hash64(key_, dim); }
   /// h_i, the random word of swap i of the permutation with key `key`
   /// (j_i = ⌊h_i·(i+1) / 2^64⌋).
-  static constexpr std::uint64_t swap_word(std::uint64_t key, std::uint32_t i) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t swap_word(std::uint64_t key, std::uint32_t i) noexcept {
     return mix64(key + (static_cast<std::uint64_t>(i) + 1) * 0x9e3779b97f4a7c15ULL);
   }
 
@@ -63,7 +63,7 @@ class ShuffledPermutationRule {
 
  private:
   // j_i, uniform on [0, i] up to a bias < (i+1)/2^64.
-  static constexpr std::uint32_t draw(std::uint64_t key, std::uint32_t i) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint32_t draw(std::uint64_t key, std::uint32_t i) noexcept {
     const std::uint64_t h = swap_word(key, i);
     return static_cast<std::uint32_t>((static_cast<unsigned __int128>(h) * (i + 1)) >> 64);
   }

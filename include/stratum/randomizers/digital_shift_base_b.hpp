@@ -23,14 +23,14 @@ namespace digits_detail {
 /// The permutations a ↦ (a + s_j) mod b of BaseBDigitalShift.
 class DigitShiftRule {
  public:
-  explicit constexpr DigitShiftRule(std::uint64_t seed) noexcept
+  STRATUM_HOST_DEVICE explicit constexpr DigitShiftRule(std::uint64_t seed) noexcept
       : key_(hash64(seed, 0x736869667462ULL /* "shiftb" */)) {}
 
   /// s_j of (dim, position), uniform on {0..b−1}.
-  std::uint32_t shift(unsigned dim, unsigned position, std::uint32_t base) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint32_t shift(unsigned dim, unsigned position, std::uint32_t base) const noexcept {
     return static_cast<std::uint32_t>(uniform_below(base, key_, dim, position));
   }
-  std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base, std::uint32_t digit) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base, std::uint32_t digit) const noexcept {
     const std::uint32_t sum = digit + shift(dim, position, base);
     return sum >= base ? sum - base : sum;
   }

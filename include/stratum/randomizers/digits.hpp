@@ -31,6 +31,11 @@
 /// fill() writes a run of consecutive indices as one table load and one add
 /// per value. Tables cover the indices up to the max_index given at
 /// construction; larger indices take a slow path with the same results.
+///
+/// Device code (docs/gpu.md): a sample reads the tables through a View
+/// (pointers and the rule, trivially copyable), taken by a kernel by value:
+/// view() points into the scrambler, view(copy) into copies that `copy`
+/// makes of each array (e.g. in device memory).
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -40,7 +45,9 @@
 #include <utility>
 #include <vector>
 
+#include "stratum/util/bits.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/host_device.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum {
@@ -94,13 +101,13 @@ inline const std::vector<u128>& digit_weights(std::uint32_t base) {
 class FastDivider {
  public:
   constexpr FastDivider() noexcept = default;
-  explicit constexpr FastDivider(std::uint64_t divisor) noexcept
+  STRATUM_HOST_DEVICE explicit constexpr FastDivider(std::uint64_t divisor) noexcept
       : divisor_(divisor),
         magic_(~std::uint64_t{0} / divisor + 1),
-        limit_(std::uint64_t{1} << (64 - std::bit_width(divisor - 1))) {}
-  constexpr std::uint64_t divisor() const noexcept { return divisor_; }
-  constexpr std::uint64_t limit() const noexcept { return limit_; }
-  constexpr std::uint64_t quotient(std::uint64_t n) const noexcept {
+        limit_(std::uint64_t{1} << (64 - bit_width64(divisor - 1))) {}
+  STRATUM_HOST_DEVICE constexpr std::uint64_t divisor() const noexcept { return divisor_; }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t limit() const noexcept { return limit_; }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t quotient(std::uint64_t n) const noexcept {
     if (n < limit_) return static_cast<std::uint64_t>((static_cast<u128>(n) * magic_) >> 64);
     return n / divisor_;
   }
@@ -112,7 +119,7 @@ class FastDivider {
 };
 
 /// A 64-bit binary fraction as a double in [0, 1): its 53 leading bits.
-constexpr double fraction_to_double(std::uint64_t fraction) noexcept {
+STRATUM_HOST_DEVICE constexpr double fraction_to_double(std::uint64_t fraction) noexcept {
   return static_cast<double>(static_cast<std::int64_t>(fraction >> 11)) * 0x1.0p-53;
 }
 
@@ -132,76 +139,6 @@ inline void require_digit_bases(const std::vector<std::uint32_t>& bases) {
 /// (π_j(digit), and all b images at once for the tables).
 template <class Rule>
 class PositionalDigitScrambler {
- public:
-  /// Tables cover the indices 0..max_index (larger ones are exact but slow).
-  PositionalDigitScrambler(Rule rule, std::vector<std::uint32_t> bases, std::uint64_t max_index)
-      : rule_(std::move(rule)), max_index_(max_index) {
-    require_digit_bases(bases);
-    dims_.reserve(bases.size());
-    for (unsigned dim = 0; dim < bases.size(); ++dim) add_dimension(dim, bases[dim]);
-  }
-
-  unsigned dimensions() const noexcept { return static_cast<unsigned>(dims_.size()); }
-  std::uint32_t base(unsigned dim) const noexcept { return dims_[dim].base; }
-  std::uint64_t max_index() const noexcept { return max_index_; }
-  const Rule& rule() const noexcept { return rule_; }
-  /// Number of 64-bit table entries held (memory: 8 bytes each).
-  std::size_t table_entries() const noexcept { return tables_.size(); }
-
-  /// The scrambled radical inverse of `index` in dimension `dim` as a 64-bit
-  /// binary fraction.
-  std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
-    const Dimension& d = dims_[dim];
-    return chunks_from(index, dim, d, 0);
-  }
-
-  /// The scrambled radical inverse as a double or float in [0, 1).
-  template <class Real = double>
-  Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(fraction_to_double(fraction(index, dim)));
-  }
-
-  /// out[k·stride] = sample(first + k, dim) for k < count: one table load and
-  /// one add per value along runs of consecutive indices.
-  void fill(std::uint64_t first, std::size_t count, unsigned dim, double* out, std::size_t stride) const noexcept {
-    if (count == 0) return;
-    const Dimension& d = dims_[dim];
-    const Chunk& low = chunks_[d.first_chunk];
-    const std::uint64_t size = d.divider.divisor();
-    if (low.size != size || count - 1 > max_index_ || first > max_index_ - (count - 1)) {
-      for (std::size_t k = 0; k < count; ++k) out[k * stride] = sample(first + k, dim);
-      return;
-    }
-    const std::uint64_t* table = tables_.data() + low.offset;
-    std::uint64_t high = d.divider.quotient(first);
-    std::uint64_t r = first - high * size;
-    while (count != 0) {
-      const std::uint64_t above = chunks_from(high, dim, d, 1);
-      const std::size_t run = static_cast<std::size_t>(std::min<std::uint64_t>(size - r, count));
-      const std::uint64_t* row = table + r;
-      for (std::size_t k = 0; k < run; ++k) out[k * stride] = fraction_to_double(row[k] + above);
-      out += run * stride;
-      count -= run;
-      r = 0;
-      ++high;
-    }
-  }
-
-  /// Value of chunk `chunk` of dimension `dim` for chunk digits `value`,
-  /// computed from the permutations (the tables hold the same numbers).
-  std::uint64_t chunk_value(unsigned dim, unsigned chunk, std::uint64_t value) const noexcept {
-    const Dimension& d = dims_[dim];
-    u128 sum = 0;
-    for (unsigned t = 0; t < d.digits_per_chunk; ++t) {
-      const unsigned position = chunk * d.digits_per_chunk + t;
-      if (position >= d.positions) break;
-      const auto digit = static_cast<std::uint32_t>(value % d.base);
-      value /= d.base;
-      sum += static_cast<u128>(rule_.image(dim, position, d.base, digit)) * weights_[d.first_weight + position];
-    }
-    return static_cast<std::uint64_t>(sum >> 64);
-  }
-
  private:
   struct Dimension {
     std::uint32_t base;
@@ -218,21 +155,131 @@ class PositionalDigitScrambler {
     std::uint64_t zero_tail;  // Σ of the values of digits 0 in this and every later chunk
   };
 
-  // Σ over chunks c ≥ first_chunk of the chunk values of `index`, whose
-  // digit group 0 is chunk `first_chunk`.
-  std::uint64_t chunks_from(std::uint64_t index, unsigned dim, const Dimension& d, unsigned first_chunk) const noexcept {
-    const Chunk* chunk = chunks_.data() + d.first_chunk;
-    std::uint64_t sum = 0;
-    unsigned c = first_chunk;
-    while (index != 0) {
-      const std::uint64_t next = d.divider.quotient(index);
-      const std::uint64_t r = index - next * d.divider.divisor();
-      sum += r < chunk[c].size ? tables_[chunk[c].offset + r] : chunk_value(dim, c, r);
-      index = next;
-      ++c;
+ public:
+  /// The per-sample path: the rule and the scrambler's arrays by pointer.
+  class View {
+   public:
+    STRATUM_HOST_DEVICE View(Rule rule, const Dimension* dims, const Chunk* chunks, const u128* weights,
+                             const std::uint64_t* tables) noexcept
+        : rule_(rule), dims_(dims), chunks_(chunks), weights_(weights), tables_(tables) {}
+
+    /// See PositionalDigitScrambler::fraction.
+    STRATUM_HOST_DEVICE std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
+      return chunks_from(index, dim, dims_[dim], 0);
     }
-    return sum + chunk[c].zero_tail;
+    template <class Real = double>
+    STRATUM_HOST_DEVICE Real sample(std::uint64_t index, unsigned dim) const noexcept {
+      return to_unit<Real>(fraction_to_double(fraction(index, dim)));
+    }
+
+    /// See PositionalDigitScrambler::chunk_value.
+    STRATUM_HOST_DEVICE std::uint64_t chunk_value(unsigned dim, unsigned chunk, std::uint64_t value) const noexcept {
+      const Dimension& d = dims_[dim];
+      u128 sum = 0;
+      for (unsigned t = 0; t < d.digits_per_chunk; ++t) {
+        const unsigned position = chunk * d.digits_per_chunk + t;
+        if (position >= d.positions) break;
+        const auto digit = static_cast<std::uint32_t>(value % d.base);
+        value /= d.base;
+        sum += static_cast<u128>(rule_.image(dim, position, d.base, digit)) * weights_[d.first_weight + position];
+      }
+      return static_cast<std::uint64_t>(sum >> 64);
+    }
+
+    // Σ over chunks c ≥ first_chunk of the chunk values of `index`, whose
+    // digit group 0 is chunk `first_chunk`.
+    STRATUM_HOST_DEVICE std::uint64_t chunks_from(std::uint64_t index, unsigned dim, const Dimension& d,
+                                                  unsigned first_chunk) const noexcept {
+      const Chunk* chunk = chunks_ + d.first_chunk;
+      std::uint64_t sum = 0;
+      unsigned c = first_chunk;
+      while (index != 0) {
+        const std::uint64_t next = d.divider.quotient(index);
+        const std::uint64_t r = index - next * d.divider.divisor();
+        sum += r < chunk[c].size ? tables_[chunk[c].offset + r] : chunk_value(dim, c, r);
+        index = next;
+        ++c;
+      }
+      return sum + chunk[c].zero_tail;
+    }
+
+   private:
+    Rule rule_;
+    const Dimension* dims_;
+    const Chunk* chunks_;
+    const u128* weights_;
+    const std::uint64_t* tables_;
+  };
+
+  /// Tables cover the indices 0..max_index (larger ones are exact but slow).
+  PositionalDigitScrambler(Rule rule, std::vector<std::uint32_t> bases, std::uint64_t max_index)
+      : rule_(std::move(rule)), max_index_(max_index) {
+    require_digit_bases(bases);
+    dims_.reserve(bases.size());
+    for (unsigned dim = 0; dim < bases.size(); ++dim) add_dimension(dim, bases[dim]);
   }
+
+  unsigned dimensions() const noexcept { return static_cast<unsigned>(dims_.size()); }
+  std::uint32_t base(unsigned dim) const noexcept { return dims_[dim].base; }
+  std::uint64_t max_index() const noexcept { return max_index_; }
+  const Rule& rule() const noexcept { return rule_; }
+  /// Number of 64-bit table entries held (memory: 8 bytes each).
+  std::size_t table_entries() const noexcept { return tables_.size(); }
+
+  /// The per-sample path reading this object's arrays.
+  View view() const noexcept { return View(rule_, dims_.data(), chunks_.data(), weights_.data(), tables_.data()); }
+  /// The per-sample path reading copies of the arrays: copy(data, count)
+  /// copies `count` elements (trivially copyable) and returns the copy's address.
+  template <class Copy>
+  View view(Copy&& copy) const {
+    return View(rule_, copy(dims_.data(), dims_.size()), copy(chunks_.data(), chunks_.size()),
+                copy(weights_.data(), weights_.size()), copy(tables_.data(), tables_.size()));
+  }
+
+  /// The scrambled radical inverse of `index` in dimension `dim` as a 64-bit
+  /// binary fraction.
+  std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept { return view().fraction(index, dim); }
+
+  /// The scrambled radical inverse as a double or float in [0, 1).
+  template <class Real = double>
+  Real sample(std::uint64_t index, unsigned dim) const noexcept {
+    return view().template sample<Real>(index, dim);
+  }
+
+  /// out[k·stride] = sample(first + k, dim) for k < count: one table load and
+  /// one add per value along runs of consecutive indices.
+  void fill(std::uint64_t first, std::size_t count, unsigned dim, double* out, std::size_t stride) const noexcept {
+    if (count == 0) return;
+    const Dimension& d = dims_[dim];
+    const Chunk& low = chunks_[d.first_chunk];
+    const std::uint64_t size = d.divider.divisor();
+    if (low.size != size || count - 1 > max_index_ || first > max_index_ - (count - 1)) {
+      for (std::size_t k = 0; k < count; ++k) out[k * stride] = sample(first + k, dim);
+      return;
+    }
+    const std::uint64_t* table = tables_.data() + low.offset;
+    const View v = view();
+    std::uint64_t high = d.divider.quotient(first);
+    std::uint64_t r = first - high * size;
+    while (count != 0) {
+      const std::uint64_t above = v.chunks_from(high, dim, d, 1);
+      const std::size_t run = static_cast<std::size_t>(std::min<std::uint64_t>(size - r, count));
+      const std::uint64_t* row = table + r;
+      for (std::size_t k = 0; k < run; ++k) out[k * stride] = fraction_to_double(row[k] + above);
+      out += run * stride;
+      count -= run;
+      r = 0;
+      ++high;
+    }
+  }
+
+  /// Value of chunk `chunk` of dimension `dim` for chunk digits `value`,
+  /// computed from the permutations (the tables hold the same numbers).
+  std::uint64_t chunk_value(unsigned dim, unsigned chunk, std::uint64_t value) const noexcept {
+    return view().chunk_value(dim, chunk, value);
+  }
+
+ private:
 
   void add_dimension(unsigned dim, std::uint32_t base) {
     Dimension d{};

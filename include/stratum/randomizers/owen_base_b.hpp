@@ -30,6 +30,10 @@
 ///    a permutation is not uniform on all b! permutations.
 /// Cost: one hash per digit position (K(b) of them, 64 in base 2), so this
 /// is tens of times slower than the tabulated digit permutations.
+///
+/// Device code (docs/gpu.md): a sample reads the keys and weights through a
+/// View (pointers, trivially copyable) that a kernel takes by value; view()
+/// points into the scrambler, view(copy) into copies that `copy` makes.
 #include <bit>
 #include <cstdint>
 #include <utility>
@@ -67,36 +71,12 @@ class BaseBOwenScrambler {
   std::uint32_t base(unsigned dim) const noexcept { return dims_[dim].base; }
 
   /// The scrambled radical inverse of `index` as a 64-bit binary fraction.
-  std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
-    const Dimension& d = dims_[dim];
-    const std::uint64_t* keys = keys_.data() + d.first;
-    if (d.base == 2) {
-      std::uint64_t flips = 0;
-      for (unsigned j = 0; j < 64; ++j) {
-        const std::uint64_t prefix = index & ((std::uint64_t{1} << j) - 1);
-        flips |= (node_word(keys[j], prefix) >> 63) << (63 - j);
-      }
-      return reverse_bits64(index) ^ flips;
-    }
-    const digits_detail::u128* weights = weights_.data() + d.first;
-    digits_detail::u128 sum = 0;
-    std::uint64_t prefix = 0;
-    std::uint64_t power = 1;  // b^j modulo 2^64: only multiplies digits 0 once it wraps
-    for (unsigned j = 0; j < d.positions; ++j) {
-      const std::uint64_t next = d.divider.quotient(index);
-      const auto digit = static_cast<std::uint32_t>(index - next * d.base);
-      index = next;
-      sum += static_cast<digits_detail::u128>(node_image(d, node_word(keys[j], prefix), digit)) * weights[j];
-      prefix += digit * power;
-      power *= d.base;
-    }
-    return static_cast<std::uint64_t>(sum >> 64);
-  }
+  std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept { return view().fraction(index, dim); }
 
   /// The scrambled radical inverse as a double or float in [0, 1).
   template <class Real = double>
   Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(digits_detail::fraction_to_double(fraction(index, dim)));
+    return view().template sample<Real>(index, dim);
   }
 
   /// π_{position, prefix}(digit) of dimension dim, where prefix = index mod
@@ -118,19 +98,75 @@ class BaseBOwenScrambler {
     bool prime;
   };
 
-  static constexpr bool is_prime(std::uint32_t n) noexcept {
+ public:
+  /// The per-sample path: the scrambler's arrays by pointer.
+  class View {
+   public:
+    STRATUM_HOST_DEVICE View(const Dimension* dims, const std::uint64_t* keys, const digits_detail::u128* weights) noexcept
+        : dims_(dims), keys_(keys), weights_(weights) {}
+
+    /// The scrambled radical inverse of `index` as a 64-bit binary fraction.
+    STRATUM_HOST_DEVICE std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
+      const Dimension& d = dims_[dim];
+      const std::uint64_t* keys = keys_ + d.first;
+      if (d.base == 2) {
+        std::uint64_t flips = 0;
+        for (unsigned j = 0; j < 64; ++j) {
+          const std::uint64_t prefix = index & ((std::uint64_t{1} << j) - 1);
+          flips |= (node_word(keys[j], prefix) >> 63) << (63 - j);
+        }
+        return reverse_bits64(index) ^ flips;
+      }
+      const digits_detail::u128* weights = weights_ + d.first;
+      digits_detail::u128 sum = 0;
+      std::uint64_t prefix = 0;
+      std::uint64_t power = 1;  // b^j modulo 2^64: only multiplies digits 0 once it wraps
+      for (unsigned j = 0; j < d.positions; ++j) {
+        const std::uint64_t next = d.divider.quotient(index);
+        const auto digit = static_cast<std::uint32_t>(index - next * d.base);
+        index = next;
+        sum += static_cast<digits_detail::u128>(node_image(d, node_word(keys[j], prefix), digit)) * weights[j];
+        prefix += digit * power;
+        power *= d.base;
+      }
+      return static_cast<std::uint64_t>(sum >> 64);
+    }
+    template <class Real = double>
+    STRATUM_HOST_DEVICE Real sample(std::uint64_t index, unsigned dim) const noexcept {
+      return to_unit<Real>(digits_detail::fraction_to_double(fraction(index, dim)));
+    }
+
+   private:
+    const Dimension* dims_;
+    const std::uint64_t* keys_;
+    const digits_detail::u128* weights_;
+  };
+
+  /// The per-sample path reading this object's arrays.
+  View view() const noexcept { return View(dims_.data(), keys_.data(), weights_.data()); }
+  /// The per-sample path reading copies: copy(data, count) copies `count`
+  /// elements (trivially copyable) and returns the copy's address.
+  template <class Copy>
+  View view(Copy&& copy) const {
+    return View(copy(dims_.data(), dims_.size()), copy(keys_.data(), keys_.size()),
+                copy(weights_.data(), weights_.size()));
+  }
+
+ private:
+
+  STRATUM_HOST_DEVICE static constexpr bool is_prime(std::uint32_t n) noexcept {
     for (std::uint32_t f = 2; f * f <= n; ++f)
       if (n % f == 0) return false;
     return n >= 2;
   }
 
   // hash64(position key, prefix), the position key pre-mixed.
-  static constexpr std::uint64_t node_word(std::uint64_t mixed_key, std::uint64_t prefix) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t node_word(std::uint64_t mixed_key, std::uint64_t prefix) noexcept {
     return mix64((mixed_key ^ (prefix * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + golden);
   }
 
   // Image of `digit` under the permutation of the node whose word is w.
-  static std::uint32_t node_image(const Dimension& d, std::uint64_t w, std::uint32_t digit) noexcept {
+  STRATUM_HOST_DEVICE static std::uint32_t node_image(const Dimension& d, std::uint64_t w, std::uint32_t digit) noexcept {
     const std::uint32_t b = d.base;
     if (b == 2) return digit ^ static_cast<std::uint32_t>(w >> 63);
     if (b <= 24) {
@@ -157,7 +193,7 @@ class BaseBOwenScrambler {
     // it lands below b (cycle walking).
     const std::uint64_t w2 = mix64(w + golden);
     const std::uint64_t w3 = mix64(w2 + golden);
-    const unsigned bits = static_cast<unsigned>(std::bit_width(b - 1));
+    const unsigned bits = static_cast<unsigned>(bit_width64(b - 1));
     const std::uint32_t mask = (std::uint32_t{1} << bits) - 1;
     const auto flip = static_cast<std::uint32_t>(w3);
     const auto odd = static_cast<std::uint32_t>(w3 >> 32) | 1u;

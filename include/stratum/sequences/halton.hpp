@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "stratum/sequences/radical_inverse.hpp"
 #include "stratum/util/primes.hpp"
@@ -13,11 +14,26 @@ namespace stratum {
 
 namespace detail {
 /// radical_inverse_reciprocal of every prime base, computed at compile time.
-inline constexpr std::array<std::uint64_t, prime_count> prime_reciprocals = [] {
+constexpr std::array<std::uint64_t, prime_count> make_prime_reciprocals() {
+  const std::array<std::uint32_t, prime_count> primes = make_primes();
   std::array<std::uint64_t, prime_count> table{};
-  for (std::size_t i = 0; i < prime_count; ++i) table[i] = radical_inverse_reciprocal(prime(i));
+  for (std::size_t i = 0; i < prime_count; ++i) table[i] = radical_inverse_reciprocal(primes[i]);
   return table;
-}();
+}
+inline constexpr std::array<std::uint64_t, prime_count> prime_reciprocals = make_prime_reciprocals();
+#if defined(__CUDACC__)
+STRATUM_DEVICE_TABLE std::array<std::uint64_t, prime_count> device_prime_reciprocals = make_prime_reciprocals();
+#endif
+
+/// radical_inverse_reciprocal(prime(i)), from the table of the side that runs.
+STRATUM_HOST_DEVICE constexpr std::uint64_t prime_reciprocal(std::size_t i) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (std::is_constant_evaluated()) return radical_inverse_reciprocal(prime(i));
+  return device_prime_reciprocals[i];
+#else
+  return prime_reciprocals[i];
+#endif
+}
 }  // namespace detail
 
 class Halton {
@@ -29,13 +45,13 @@ class Halton {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "Halton supports 1 to 1024 dimensions (one prime base each)");
   }
-  unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
   /// Base of dimension `dim` (the dim-th prime).
-  static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim); }
+  STRATUM_HOST_DEVICE static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim); }
 
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim]));
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocal(dim)));
   }
 
  private:
@@ -54,15 +70,15 @@ class Hammersley {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "Hammersley supports 1 to 1025 dimensions");
   }
-  std::uint64_t count() const noexcept { return count_; }
-  unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE std::uint64_t count() const noexcept { return count_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
   /// Base of dimension dim ≥ 1 (dimension 0 is i/N).
-  static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim - 1); }
+  STRATUM_HOST_DEVICE static constexpr std::uint32_t base(unsigned dim) noexcept { return prime(dim - 1); }
 
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     if (dim == 0) return to_unit<Real>(static_cast<double>(index) / static_cast<double>(count_));
-    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocals[dim - 1]));
+    return to_unit<Real>(radical_inverse(base(dim), index, detail::prime_reciprocal(dim - 1)));
   }
 
  private:

@@ -31,6 +31,7 @@
 #include <string>
 
 #include "stratum/util/error.hpp"
+#include "stratum/util/host_device.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum {
@@ -55,20 +56,20 @@ class Rank1Lattice {
     }
   }
 
-  std::uint64_t count() const noexcept { return count_; }
-  unsigned dimensions() const noexcept { return dimensions_; }
-  std::uint64_t generator(unsigned dim) const noexcept { return count_ == 1 ? 1 : generator_[dim]; }
+  STRATUM_HOST_DEVICE std::uint64_t count() const noexcept { return count_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE std::uint64_t generator(unsigned dim) const noexcept { return count_ == 1 ? 1 : generator_[dim]; }
 
   /// (index · z_dim) mod n: the point's coordinate times n, exactly.
-  constexpr std::uint64_t numerator(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t numerator(std::uint64_t index, unsigned dim) const noexcept {
     return static_cast<std::uint64_t>(static_cast<unsigned __int128>(index % count_) * generator_[dim] % count_);
   }
 
   /// frac(index · z_dim / n), correctly rounded for n < 2^53.
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     const double value = static_cast<double>(numerator(index, dim)) / static_cast<double>(count_);
-    return to_unit<Real>(std::min(value, one_minus_epsilon_double));
+    return to_unit<Real>(one_minus_epsilon_double < value ? one_minus_epsilon_double : value);
   }
 
  private:
@@ -105,7 +106,8 @@ constexpr unsigned fibonacci_index(std::uint64_t n) noexcept {
 /// that is coprime to n (ties to the smaller), which keeps the set Latin.
 /// For n = F_k the nearest integer to n/φ is F_{k−1} anyway (Binet's formula
 /// gives |F_k/φ − F_{k−1}| = φ^(−k) < 1/2 for k ≥ 2), so this is one rule.
-constexpr std::uint64_t golden_generator(std::uint64_t n) noexcept {
+/// Host only (not constexpr): its long double has no device counterpart.
+inline std::uint64_t golden_generator(std::uint64_t n) noexcept {
   if (n <= 2) return 1;
   if (const unsigned k = fibonacci_index(n)) return fibonacci_number(k - 1);
   const long double target = static_cast<long double>(n) * 0.6180339887498948482045868343656381L;

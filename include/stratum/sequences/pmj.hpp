@@ -45,7 +45,9 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <type_traits>
 
+#include "stratum/util/bits.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -91,6 +93,30 @@ constexpr std::array<std::array<std::uint64_t, 64>, 2> pmj02_xor_values() {
 
 inline constexpr auto pmj02_columns = pmj02_generator_columns();
 inline constexpr auto pmj02_xors = pmj02_xor_values();
+#if defined(__CUDACC__)
+STRATUM_DEVICE_TABLE std::array<std::array<std::uint64_t, 64>, 2> device_pmj02_columns = pmj02_generator_columns();
+STRATUM_DEVICE_TABLE std::array<std::array<std::uint64_t, 64>, 2> device_pmj02_xors = pmj02_xor_values();
+#endif
+
+/// Column c of coordinate `coordinate`'s generator matrix, from the table of
+/// the side that runs (compile-time evaluation on the device recomputes).
+STRATUM_HOST_DEVICE constexpr std::uint64_t pmj02_column(unsigned coordinate, unsigned c) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (std::is_constant_evaluated()) return pmj02_generator_columns()[coordinate][c];
+  return device_pmj02_columns[coordinate][c];
+#else
+  return pmj02_columns[coordinate][c];
+#endif
+}
+/// x_m of coordinate `coordinate`, likewise.
+STRATUM_HOST_DEVICE constexpr std::uint64_t pmj02_xor(unsigned coordinate, unsigned m) noexcept {
+#if defined(__CUDA_ARCH__)
+  if (std::is_constant_evaluated()) return pmj02_xor_values()[coordinate][m];
+  return device_pmj02_xors[coordinate][m];
+#else
+  return pmj02_xors[coordinate][m];
+#endif
+}
 
 }  // namespace detail
 
@@ -103,21 +129,21 @@ class Pmj02 {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "pmj02 supports 1 to 64 dimensions (pairs (0,1), (2,3), ... of independent pmj02 sequences)");
   }
-  unsigned dimensions() const noexcept { return dimensions_; }
-  std::uint64_t seed() const noexcept { return seed_; }
+  STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
+  STRATUM_HOST_DEVICE std::uint64_t seed() const noexcept { return seed_; }
 
   /// Column c of the generator matrix of coordinate 0 (x) or 1 (y), as a
   /// mask of rows (bit r: digit r + 1).
-  static constexpr std::uint64_t generator_column(unsigned coordinate, unsigned c) noexcept {
-    return detail::pmj02_columns[coordinate][c];
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t generator_column(unsigned coordinate, unsigned c) noexcept {
+    return detail::pmj02_column(coordinate, c);
   }
   /// x_m of coordinate 0 or 1 (see the header comment).
-  static constexpr std::uint64_t xor_value(unsigned coordinate, unsigned m) noexcept {
-    return detail::pmj02_xors[coordinate][m];
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t xor_value(unsigned coordinate, unsigned m) noexcept {
+    return detail::pmj02_xor(coordinate, m);
   }
 
   /// The coordinate as a 64-bit binary fraction (bit 63 is the first digit).
-  constexpr std::uint64_t sample_bits(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t sample_bits(std::uint64_t index, unsigned dim) const noexcept {
     const unsigned pair = dim / 2;
     if (pair != 0) index = shuffle(index, hash64(seed_, 0x706d6a3032736875ULL, pair));
     return keyed_bits(index, dim & 1u, digit_key(seed_, dim));
@@ -127,7 +153,7 @@ class Pmj02 {
   /// many points of one dimension (the renderer's per-pixel sets): with it,
   /// keyed_bits(index, dim & 1, digit_key(seed, dim)) = sample_bits(index, dim)
   /// for dimensions 0 and 1 (pair 0, read without a shuffle).
-  static constexpr std::uint64_t digit_key(std::uint64_t seed, unsigned dim) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t digit_key(std::uint64_t seed, unsigned dim) noexcept {
     return hash64(hash64(seed, 0x706d6a3032646967ULL, dim));
   }
   /// Digits of point `index` in coordinate 0 or 1 of a pair's sequence:
@@ -135,24 +161,24 @@ class Pmj02 {
   /// (those of the link before) from its own random word hash64(k, link) and
   /// flips digit m+1 relative to the next link. `key` is hash64(k)
   /// (digit_key), so each word is one hash64_extend.
-  static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate, std::uint64_t key) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate, std::uint64_t key) noexcept {
     std::uint64_t value = 0;
     std::uint64_t flips = 0;
     std::uint64_t unset = ~std::uint64_t{0};  // digits still to fill (high bits)
     while (index != 0) {
-      const unsigned m = 63u - static_cast<unsigned>(std::countl_zero(index));
+      const unsigned m = 63u - static_cast<unsigned>(countl_zero64(index));
       const std::uint64_t deeper = m == 63 ? 0 : (~std::uint64_t{0} >> (m + 1));  // digits m+2 …
       value |= hash64_extend(key, index) & deeper & unset;
       flips |= std::uint64_t{1} << (63 - m);  // digit m+1
       unset &= ~deeper;
-      index = (index ^ (std::uint64_t{1} << m)) ^ detail::pmj02_xors[coordinate][m];
+      index = (index ^ (std::uint64_t{1} << m)) ^ detail::pmj02_xor(coordinate, m);
     }
     value |= hash64_extend(key, 0) & unset;
     return value ^ flips;
   }
 
   template <class Real = double>
-  constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
+  STRATUM_HOST_DEVICE constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
     const std::uint64_t bits = sample_bits(index, dim);
     if constexpr (sizeof(Real) == sizeof(float)) return bits_to_float(bits);
     else return bits_to_double(bits);
@@ -160,16 +186,16 @@ class Pmj02 {
 
   /// The index at which pair `pair` ≥ 1 reads its sequence: a seeded
   /// bijection of each block [2^k, 2^(k+1)) onto itself (0 and 1 are fixed).
-  constexpr std::uint64_t shuffled_index(std::uint64_t index, unsigned pair) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint64_t shuffled_index(std::uint64_t index, unsigned pair) const noexcept {
     return pair == 0 ? index : shuffle(index, hash64(seed_, 0x706d6a3032736875ULL, pair));
   }
 
  private:
   /// Bijection of [2^k, 2^(k+1)) for k = msb(index): add, multiply by odd
   /// and xor-shift modulo 2^k, each invertible, with seeded constants.
-  static constexpr std::uint64_t shuffle(std::uint64_t index, std::uint64_t key) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t shuffle(std::uint64_t index, std::uint64_t key) noexcept {
     if (index < 2) return index;
-    const unsigned k = 63u - static_cast<unsigned>(std::countl_zero(index));
+    const unsigned k = 63u - static_cast<unsigned>(countl_zero64(index));
     const std::uint64_t mask = (std::uint64_t{1} << k) - 1;
     const std::uint64_t a = hash64(key, k), b = hash64(a, k) | 1u, c = hash64(b, k) | 1u;
     const unsigned shift = (k + 1) / 2;

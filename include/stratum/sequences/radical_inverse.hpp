@@ -14,13 +14,13 @@ namespace stratum {
 /// ⌈2^64 / b⌉: the high word of index × this is ⌊index / b⌋ exactly for
 /// index < 2^(64 − ⌈log2 b⌉) (Lemire, Kaser, Kurz 2019, "Faster remainder by
 /// direct computation", Theorem 1), which spares a 64-bit division per digit.
-constexpr std::uint64_t radical_inverse_reciprocal(std::uint32_t base) noexcept { return ~std::uint64_t{0} / base + 1; }
+STRATUM_HOST_DEVICE constexpr std::uint64_t radical_inverse_reciprocal(std::uint32_t base) noexcept { return ~std::uint64_t{0} / base + 1; }
 
 /// φ_b(index) with b's reciprocal precomputed (radical_inverse_reciprocal).
-constexpr double radical_inverse(std::uint32_t base, std::uint64_t index, std::uint64_t reciprocal) noexcept {
+STRATUM_HOST_DEVICE constexpr double radical_inverse(std::uint32_t base, std::uint64_t index, std::uint64_t reciprocal) noexcept {
   if (base == 2) return static_cast<double>(reverse_bits64(index) >> 11) * 0x1.0p-53;
   const std::uint64_t limit = (std::uint64_t{1} << 63) / base;
-  const std::uint64_t exact_below = std::uint64_t{1} << (64 - std::bit_width(base - 1));
+  const std::uint64_t exact_below = std::uint64_t{1} << (64 - bit_width64(base - 1));
   std::uint64_t reversed = 0;
   std::uint64_t power = 1;
   while (index != 0 && power <= limit) {
@@ -39,13 +39,13 @@ constexpr double radical_inverse(std::uint32_t base, std::uint64_t index, std::u
 /// Digits are accumulated as an integer and divided once, so the result is
 /// the correctly rounded value of the truncated expansion; digits below
 /// b^-k with b^k ≥ 2^63 are dropped (they are below double resolution).
-constexpr double radical_inverse(std::uint32_t base, std::uint64_t index) noexcept {
+STRATUM_HOST_DEVICE constexpr double radical_inverse(std::uint32_t base, std::uint64_t index) noexcept {
   return radical_inverse(base, index, radical_inverse_reciprocal(base));
 }
 
 /// φ_b(index) for the caller's precision (double or float).
 template <class Real>
-constexpr Real radical_inverse_as(std::uint32_t base, std::uint64_t index) noexcept {
+STRATUM_HOST_DEVICE constexpr Real radical_inverse_as(std::uint32_t base, std::uint64_t index) noexcept {
   return to_unit<Real>(radical_inverse(base, index));
 }
 

@@ -30,11 +30,17 @@
 /// generation should use the Gray-code step x_{i+1} = x_i ⊕ step(i + 1), or
 /// aligned blocks, x(m·2^k + r) = x(m·2^k) ⊕ C·digits(r) for r < 2^k (in
 /// both orders), which vectorize (src/registry/samplers_sobol.cpp).
+///
+/// Device code (docs/gpu.md): the per-sample path reads the tables through a
+/// Sobol::View, a trivially copyable (dimensions, order, pointer) that a
+/// kernel takes by value; view() points into this object, view(copy) into a
+/// copy of table() that `copy` makes (e.g. in device memory).
 #include <bit>
 #include <boost/random/detail/sobol_table.hpp>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "stratum/randomizers/base2.hpp"
@@ -55,6 +61,67 @@ class Sobol {
     natural,  ///< x_i = C · i: pbrt-v4 order
   };
 
+ private:
+  // Per dimension, twice (plain, then reversed columns): 256 XORs of columns
+  // 0–7, 256 XORs of columns 8–15, then the 64 columns.
+  static constexpr std::size_t columns_offset = 512;
+  static constexpr std::size_t reversed_offset = 512 + columns;
+  static constexpr std::size_t block_size = 2 * reversed_offset;
+
+ public:
+  /// The per-sample path: the generator's tables by pointer. Cheap to copy;
+  /// valid while the table it points into lives.
+  class View {
+   public:
+    STRATUM_HOST_DEVICE constexpr View(unsigned dimensions, Order order, const std::uint64_t* table) noexcept
+        : dimensions_(dimensions), order_(order), table_(table) {}
+    STRATUM_HOST_DEVICE unsigned dimensions() const noexcept { return dimensions_; }
+    STRATUM_HOST_DEVICE Order order() const noexcept { return order_; }
+    STRATUM_HOST_DEVICE std::uint64_t digits_of(std::uint64_t index) const noexcept {
+      return order_ == Order::gray ? gray_code(index) : index;
+    }
+    STRATUM_HOST_DEVICE std::uint64_t direction(unsigned dim, unsigned column) const noexcept {
+      return table_[std::size_t{dim} * block_size + columns_offset + column];
+    }
+    STRATUM_HOST_DEVICE std::uint64_t bits(std::uint64_t index, unsigned dim) const noexcept {
+      return multiply(digits_of(index), table_ + std::size_t{dim} * block_size);
+    }
+    STRATUM_HOST_DEVICE std::uint64_t reversed_bits(std::uint64_t index, unsigned dim) const noexcept {
+      return multiply(digits_of(index), table_ + std::size_t{dim} * block_size + reversed_offset);
+    }
+    template <class Real = double>
+    STRATUM_HOST_DEVICE Real sample(std::uint64_t index, unsigned dim) const noexcept {
+      return bits_to_unit<Real>(bits(index, dim));
+    }
+    /// See Sobol::sample(index, dim, randomizer).
+    template <class Real = double, class Randomizer>
+    STRATUM_HOST_DEVICE Real sample(std::uint64_t index, unsigned dim, const Randomizer& randomizer) const noexcept {
+      if constexpr (requires { randomizer.dimension(dim).scramble_reversed(std::uint64_t{}); })
+        return sample<Real>(index, dim, randomizer.dimension(dim));
+      else if constexpr (requires(std::uint64_t w) {
+                           { randomizer.scramble_reversed(w) } -> std::same_as<std::uint64_t>;
+                         })
+        return bits_to_unit<Real>(reverse_bits64(randomizer.scramble_reversed(reversed_bits(index, dim))));
+      else if constexpr (requires(std::uint64_t w) {
+                           { randomizer(w) } -> std::same_as<std::uint64_t>;
+                         })
+        return bits_to_unit<Real>(randomizer(bits(index, dim)));
+      else {
+        static_assert(
+            requires(std::uint64_t w) {
+              { randomizer(w, dim) } -> std::same_as<std::uint64_t>;
+            },
+            "a base-2 randomizer maps 64-bit words: r(bits, dim) or r(bits)");
+        return bits_to_unit<Real>(randomizer(bits(index, dim), dim));
+      }
+    }
+
+   private:
+    unsigned dimensions_;
+    Order order_;
+    const std::uint64_t* table_;
+  };
+
   explicit Sobol(unsigned dimensions, Order order = Order::gray) : dimensions_(dimensions), order_(order) {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "Sobol supports 1 to 3667 dimensions (Joe-Kuo table in Boost.Random)");
@@ -72,35 +139,40 @@ class Sobol {
   unsigned dimensions() const noexcept { return dimensions_; }
   Order order() const noexcept { return order_; }
 
-  /// Direction number v_{column+1} of dimension dim: column `column` of the
-  /// generator matrix as a 64-bit word (most significant bit = first digit).
-  std::uint64_t direction(unsigned dim, unsigned column) const noexcept {
-    return data_[std::size_t{dim} * block_size + columns_offset + column];
+  /// The tables every sample reads (9 KiB per dimension).
+  std::span<const std::uint64_t> table() const noexcept { return data_; }
+  /// The per-sample path reading this object's tables.
+  View view() const noexcept { return View(dimensions_, order_, data_.data()); }
+  /// The per-sample path reading copy(table().data(), table().size()), a
+  /// copy of the tables (device memory, for a kernel); copy returns its address.
+  template <class Copy>
+  View view(Copy&& copy) const {
+    return View(dimensions_, order_, copy(data_.data(), data_.size()));
   }
 
+  /// Direction number v_{column+1} of dimension dim: column `column` of the
+  /// generator matrix as a 64-bit word (most significant bit = first digit).
+  std::uint64_t direction(unsigned dim, unsigned column) const noexcept { return view().direction(dim, column); }
+
   /// Gray code of i: consecutive codes differ in bit ctz(i + 1).
-  static constexpr std::uint64_t gray_code(std::uint64_t i) noexcept { return i ^ (i >> 1); }
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t gray_code(std::uint64_t i) noexcept { return i ^ (i >> 1); }
 
   /// Index bits the generator matrix multiplies for point `index` (the Gray
   /// code in Gray order, the index itself in natural order).
-  std::uint64_t digits_of(std::uint64_t index) const noexcept {
-    return order_ == Order::gray ? gray_code(index) : index;
-  }
+  std::uint64_t digits_of(std::uint64_t index) const noexcept { return view().digits_of(index); }
 
   /// Point `index`, dimension `dim`, as a 64-bit binary fraction (unscrambled).
-  std::uint64_t bits(std::uint64_t index, unsigned dim) const noexcept {
-    return multiply(digits_of(index), &data_[std::size_t{dim} * block_size]);
-  }
+  std::uint64_t bits(std::uint64_t index, unsigned dim) const noexcept { return view().bits(index, dim); }
   /// bits(index, dim) with its 64 bits reversed (first digit in bit 0).
   std::uint64_t reversed_bits(std::uint64_t index, unsigned dim) const noexcept {
-    return multiply(digits_of(index), &data_[std::size_t{dim} * block_size + reversed_offset]);
+    return view().reversed_bits(index, dim);
   }
 
   /// The word XORed into every point of dimension dim when going from point
   /// i to point i + 1 = next_index (≥ 1): column ctz(i + 1) in Gray order,
   /// columns 0..ctz(i + 1) in natural order.
   std::uint64_t step(std::uint64_t next_index, unsigned dim) const noexcept {
-    const unsigned c = static_cast<unsigned>(std::countr_zero(next_index));
+    const unsigned c = static_cast<unsigned>(countr_zero64(next_index));
     if (order_ == Order::gray) return direction(dim, c);
     std::uint64_t x = 0;
     for (unsigned k = 0; k <= c; ++k) x ^= direction(dim, k);
@@ -119,29 +191,12 @@ class Sobol {
   /// Randomizers that work on reversed words use the reversed tables.
   template <class Real = double, class Randomizer>
   Real sample(std::uint64_t index, unsigned dim, const Randomizer& randomizer) const noexcept {
-    if constexpr (requires { randomizer.dimension(dim).scramble_reversed(std::uint64_t{}); })
-      return sample<Real>(index, dim, randomizer.dimension(dim));
-    else if constexpr (requires(std::uint64_t w) {
-                         { randomizer.scramble_reversed(w) } -> std::same_as<std::uint64_t>;
-                       })
-      return bits_to_unit<Real>(reverse_bits64(randomizer.scramble_reversed(reversed_bits(index, dim))));
-    else if constexpr (requires(std::uint64_t w) {
-                         { randomizer(w) } -> std::same_as<std::uint64_t>;
-                       })
-      return bits_to_unit<Real>(randomizer(bits(index, dim)));
-    else {
-      static_assert(
-          requires(std::uint64_t w) {
-            { randomizer(w, dim) } -> std::same_as<std::uint64_t>;
-          },
-          "a base-2 randomizer maps 64-bit words: r(bits, dim) or r(bits)");
-      return bits_to_unit<Real>(randomizer(bits(index, dim), dim));
-    }
+    return view().sample<Real>(index, dim, randomizer);
   }
 
   /// Top 53 (double) or 24 (float) bits of a 64-bit fraction, exactly, in [0, 1).
   template <class Real>
-  static constexpr Real bits_to_unit(std::uint64_t word) noexcept {
+  STRATUM_HOST_DEVICE static constexpr Real bits_to_unit(std::uint64_t word) noexcept {
     if constexpr (sizeof(Real) == sizeof(float))
       return bits_to_float(word);
     else
@@ -173,16 +228,10 @@ class Sobol {
   }
 
  private:
-  // Per dimension, twice (plain, then reversed columns): 256 XORs of columns
-  // 0–7, 256 XORs of columns 8–15, then the 64 columns.
-  static constexpr std::size_t columns_offset = 512;
-  static constexpr std::size_t reversed_offset = 512 + columns;
-  static constexpr std::size_t block_size = 2 * reversed_offset;
-
-  static std::uint64_t multiply(std::uint64_t digits, const std::uint64_t* block) noexcept {
+  STRATUM_HOST_DEVICE static std::uint64_t multiply(std::uint64_t digits, const std::uint64_t* block) noexcept {
     std::uint64_t x = block[digits & 0xff] ^ block[256 + ((digits >> 8) & 0xff)];
     const std::uint64_t* column = block + columns_offset;
-    for (std::uint64_t rest = digits >> 16 << 16; rest != 0; rest &= rest - 1) x ^= column[std::countr_zero(rest)];
+    for (std::uint64_t rest = digits >> 16 << 16; rest != 0; rest &= rest - 1) x ^= column[countr_zero64(rest)];
     return x;
   }
 

@@ -6,10 +6,12 @@
 /// when applied to a counter.
 #include <cstdint>
 
+#include "stratum/util/host_device.hpp"
+
 namespace stratum {
 
 /// Bijective 64-bit mixer (SplitMix64 finalizer).
-constexpr std::uint64_t mix64(std::uint64_t x) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t mix64(std::uint64_t x) noexcept {
   x ^= x >> 30;
   x *= 0xbf58476d1ce4e5b9ULL;
   x ^= x >> 27;
@@ -19,9 +21,9 @@ constexpr std::uint64_t mix64(std::uint64_t x) noexcept {
 }
 
 /// Hash of a seed and any number of 64-bit counters.
-constexpr std::uint64_t hash64(std::uint64_t seed) noexcept { return mix64(seed + 0x9e3779b97f4a7c15ULL); }
+STRATUM_HOST_DEVICE constexpr std::uint64_t hash64(std::uint64_t seed) noexcept { return mix64(seed + 0x9e3779b97f4a7c15ULL); }
 template <class... Rest>
-constexpr std::uint64_t hash64(std::uint64_t seed, std::uint64_t first, Rest... rest) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t hash64(std::uint64_t seed, std::uint64_t first, Rest... rest) noexcept {
   return hash64(mix64(seed + 0x9e3779b97f4a7c15ULL) ^ (first * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL),
                 rest...);
 }
@@ -29,22 +31,22 @@ constexpr std::uint64_t hash64(std::uint64_t seed, std::uint64_t first, Rest... 
 /// hash64(seed, c₁, …, c_k, c) from h = hash64(seed, c₁, …, c_k): one mix
 /// instead of k + 2, for loops where only the last counters vary (hash64 is
 /// a chain: each counter is xored into the previous mix).
-constexpr std::uint64_t hash64_extend(std::uint64_t h, std::uint64_t c) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t hash64_extend(std::uint64_t h, std::uint64_t c) noexcept {
   return mix64((h ^ (c * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + 0x9e3779b97f4a7c15ULL);
 }
 
 /// Top 53 bits of a 64-bit word as a double in [0, 1).
-constexpr double bits_to_double(std::uint64_t bits) noexcept {
+STRATUM_HOST_DEVICE constexpr double bits_to_double(std::uint64_t bits) noexcept {
   return static_cast<double>(bits >> 11) * 0x1.0p-53;
 }
 /// Top 24 bits of a 64-bit word as a float in [0, 1).
-constexpr float bits_to_float(std::uint64_t bits) noexcept {
+STRATUM_HOST_DEVICE constexpr float bits_to_float(std::uint64_t bits) noexcept {
   return static_cast<float>(bits >> 40) * 0x1.0p-24f;
 }
 
 /// Uniform value in [0, 1) for (seed, counters).
 template <class Real = double, class... Counters>
-constexpr Real uniform01(std::uint64_t seed, Counters... counters) noexcept {
+STRATUM_HOST_DEVICE constexpr Real uniform01(std::uint64_t seed, Counters... counters) noexcept {
   const std::uint64_t bits = hash64(seed, static_cast<std::uint64_t>(counters)...);
   if constexpr (sizeof(Real) == sizeof(float)) return bits_to_float(bits);
   else return bits_to_double(bits);
@@ -54,7 +56,7 @@ constexpr Real uniform01(std::uint64_t seed, Counters... counters) noexcept {
 /// with rejection (Lemire 2019, "Fast random integer generation in an interval"),
 /// drawing further words from the same counter stream when it rejects.
 template <class... Counters>
-constexpr std::uint64_t uniform_below(std::uint64_t bound, std::uint64_t seed, Counters... counters) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t uniform_below(std::uint64_t bound, std::uint64_t seed, Counters... counters) noexcept {
   const std::uint64_t key = hash64(seed, static_cast<std::uint64_t>(counters)...);
   for (std::uint64_t attempt = 0;; ++attempt) {
     const std::uint64_t word = hash64(key, attempt);
