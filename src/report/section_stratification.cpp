@@ -119,7 +119,7 @@ Section stratification_section(SectionContext& context) {
   std::vector<sa::SamplerChoice> samplers{
       sa::parse_sampler_choice("random"), sa::parse_sampler_choice("jittered"),
       sa::parse_sampler_choice("sobol:owen"), sa::parse_sampler_choice("pmj02")};
-  std::vector<std::string> skipped;
+  std::vector<std::string> skipped, skipped_names;  // specs for report.json, human names for the prose
   for (const auto& extra : context.extra_samplers()) {
     const bool duplicate = std::any_of(samplers.begin(), samplers.end(), [&](const sa::SamplerChoice& s) {
       return s.name == extra.name && s.randomize == extra.randomize;
@@ -128,7 +128,7 @@ Section stratification_section(SectionContext& context) {
     if (takes_counts(extra, counts))
       samplers.push_back(extra);
     else
-      skipped.push_back(named_with_spec(extra));
+      skipped.push_back(label(extra)), skipped_names.push_back(named_with_spec(extra));
   }
 
   sa::ConvergenceRequest request;
@@ -183,7 +183,7 @@ Section stratification_section(SectionContext& context) {
       slope_text(entry_of(smooth, "sobol").slope), slope_text(entry_of(smooth, "pmj02").slope)));
   if (!skipped.empty()) {
     std::string names;
-    for (const auto& name : skipped) names += (names.empty() ? "" : ", ") + name;
+    for (const auto& name : skipped_names) names += (names.empty() ? "" : ", ") + name;
     section.text.push_back(fmt::format("Left out (they do not take every N of the study): {}.", names));
   }
 
