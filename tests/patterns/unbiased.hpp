@@ -25,6 +25,15 @@ inline double test_integral(unsigned d) { return (std::exp(1.0) - 1.0) * std::po
 /// Šidák-corrected per-test level for `tests` tests at family level `family_alpha`.
 inline double sidak(double family_alpha, int tests) { return 1.0 - std::pow(1.0 - family_alpha, 1.0 / tests); }
 
+/// Q = (1/n) Σ_k x_k0 · x_k1² · exp(x_k2) over n × d row-major points (d ≥ 3):
+/// smooth, not a product of equal factors, and E Q = (e − 1)/6 for uniform points.
+inline double product_test_mean(const double* x, std::size_t n, std::size_t d) {
+  double sum = 0;
+  for (std::size_t k = 0; k < n; ++k) sum += x[k * d] * x[k * d + 1] * x[k * d + 1] * std::exp(x[k * d + 2]);
+  return sum / static_cast<double>(n);
+}
+inline double product_test_integral() { return (std::exp(1.0) - 1) / 6; }
+
 /// Two-sided one-sample t-test of H0: E[estimate] = truth at level alpha.
 inline void expect_unbiased(const std::string& what, const std::vector<double>& estimates, double truth,
                             double alpha) {

@@ -13,6 +13,7 @@
 #include "stratum/randomizers/owen_base_b.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/sequences/sobol.hpp"
+#include "../patterns/unbiased.hpp"
 
 namespace stratum {
 namespace {
@@ -261,24 +262,15 @@ TEST(FaureRegistry, IsTheHeadersSequenceUnderEachRandomizer) {
 // exp(x2), ∫f = (e − 1)/6, over 300 seeds, two-sided t-tests for the four
 // randomizers at family-wise α = 1e-3 (Šidák).
 TEST(FaureRegistry, EstimatesAreUnbiasedOverSeeds) {
-  const int seeds = 300;
   const std::vector<std::string> randomizers = {"owen", "permute", "xor", "cp"};
-  const double exact = (std::exp(1.0) - 1) / 6;
-  const double level = 1 - std::pow(1 - 1e-3, 1.0 / static_cast<double>(randomizers.size()));
-  const double t_crit = boost::math::quantile(boost::math::students_t(seeds - 1), 1 - level / 2);
+  const double level = testing::sidak(1e-3, static_cast<int>(randomizers.size()));
   for (const std::string& randomize : randomizers) {
-    double sum = 0, sum2 = 0;
-    for (int seed = 0; seed < seeds; ++seed) {
-      const PointSet p = registry_points(125, 3, randomize, static_cast<std::uint64_t>(seed) + 77);
-      double q = 0;
-      for (std::size_t k = 0; k < 125; ++k) q += p(k, 0) * p(k, 1) * p(k, 1) * std::exp(p(k, 2));
-      q /= 125;
-      sum += q;
-      sum2 += q * q;
+    std::vector<double> estimates;
+    for (std::uint64_t seed = 0; seed < 300; ++seed) {
+      const PointSet p = registry_points(125, 3, randomize, seed + 77);
+      estimates.push_back(testing::product_test_mean(p.data.get(), p.n, p.d));
     }
-    const double mean = sum / seeds, variance = (sum2 - seeds * mean * mean) / (seeds - 1);
-    EXPECT_GT(variance, 0) << randomize;
-    EXPECT_LT(std::fabs(mean - exact), t_crit * std::sqrt(variance / seeds)) << randomize;
+    testing::expect_unbiased("faure:" + randomize, estimates, testing::product_test_integral(), level);
   }
 }
 
