@@ -12,6 +12,7 @@
 #include "stratum/randomizers/digital_shift_base_b.hpp"
 #include "stratum/randomizers/owen_base_b.hpp"
 #include "stratum/registry.hpp"
+#include "../registry/registry_points.hpp"
 #include "stratum/sequences/sobol.hpp"
 #include "../patterns/unbiased.hpp"
 
@@ -223,13 +224,7 @@ TEST(Faure, RandomizedNetsStayNets) {
 
 PointSet registry_points(std::uint64_t n, unsigned d, const std::string& randomize, std::uint64_t seed,
                          std::uint64_t start = 0) {
-  SamplerRequest request;
-  request.n = n;
-  request.d = d;
-  request.randomize = randomize;
-  request.seed = seed;
-  request.start = start;
-  return generate_points("faure", request);
+  return testing::sampler_points("faure", n, d, randomize, seed, start);
 }
 
 TEST(FaureRegistry, IsTheHeadersSequenceUnderEachRandomizer) {

@@ -12,6 +12,7 @@
 #include "stratum/randomizers/digital_shift_base_b.hpp"
 #include "stratum/randomizers/owen_base_b.hpp"
 #include "stratum/registry.hpp"
+#include "../registry/registry_points.hpp"
 
 namespace stratum {
 namespace {
@@ -82,13 +83,7 @@ TEST(Hammersley, BaseTwoNetAtPowersOfTwo) {
 
 PointSet registry_points(const std::string& name, std::uint64_t n, unsigned d, const std::string& randomize,
                          std::uint64_t seed, std::uint64_t start = 0) {
-  SamplerRequest request;
-  request.n = n;
-  request.d = d;
-  request.randomize = randomize;
-  request.seed = seed;
-  request.start = start;
-  return generate_points(name, request);
+  return testing::sampler_points(name, n, d, randomize, seed, start);
 }
 
 const std::vector<std::string> kDigitRandomizers = {"none", "permute", "owen", "xor"};

@@ -12,6 +12,7 @@
 #include "stratum/analysis/l2_discrepancy.hpp"
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/registry.hpp"
+#include "../registry/registry_points.hpp"
 #include "stratum/util/hash.hpp"
 #include "../patterns/unbiased.hpp"
 
@@ -189,14 +190,7 @@ TEST(Kronecker, DiscrepancyFarBelowRandom) {
 
 PointSet registry_points(std::uint64_t n, unsigned d, const std::string& randomize, std::uint64_t seed,
                          std::map<std::string, std::string> params = {}, std::uint64_t start = 0) {
-  SamplerRequest request;
-  request.n = n;
-  request.d = d;
-  request.randomize = randomize;
-  request.seed = seed;
-  request.start = start;
-  request.params = std::move(params);
-  return generate_points("kronecker", request);
+  return testing::sampler_points("kronecker", n, d, randomize, seed, start, std::move(params));
 }
 
 TEST(KroneckerRegistry, IsTheHeadersSequenceFromStartWithCranleyPatterson) {

@@ -11,6 +11,7 @@
 
 #include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/registry.hpp"
+#include "../registry/registry_points.hpp"
 #include "stratum/sequences/lattice.hpp"
 #include "stratum/sequences/radical_inverse.hpp"
 #include "../patterns/unbiased.hpp"
@@ -104,14 +105,7 @@ TEST(LatticeSequence, RejectsBadArguments) {
 
 PointSet registry_points(std::uint64_t n, unsigned d, const std::string& randomize, std::uint64_t seed,
                          std::map<std::string, std::string> params = {}, std::uint64_t start = 0) {
-  SamplerRequest request;
-  request.n = n;
-  request.d = d;
-  request.randomize = randomize;
-  request.seed = seed;
-  request.start = start;
-  request.params = std::move(params);
-  return generate_points("lattice-sequence", request);
+  return testing::sampler_points("lattice-sequence", n, d, randomize, seed, start, std::move(params));
 }
 
 TEST(LatticeSequenceRegistry, IsTheHeadersSequenceWithCranleyPatterson) {
