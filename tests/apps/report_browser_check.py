@@ -78,8 +78,11 @@ for text in prose:
         failures.append(f"a \"(s)\" plural: {text[:120]}")
     if registry_id.search(text):
         failures.append(f"a registry id in the prose: {registry_id.search(text).group(0)} in {text[:120]}")
-    if re.search(r"\b1 (points|samples|threads|rays|runs|realizations)\b", text) or "0.0 s" in text:
-        failures.append(f"a miscounted noun or a zero duration: {text[:120]}")
+    # A zero duration is "0.0 s" or "0 ms" standing alone, not the tail of "40.0 s".
+    miscount = (re.search(r"\b1 (points|samples|threads|rays|runs|realizations)\b", text)
+                or re.search(r"(?<![\d.])0(\.0+)? m?s\b", text))
+    if miscount:
+        failures.append(f"a miscounted noun or a zero duration: \"{miscount.group(0)}\" in {text[:120]}")
 
 broken = [src for src, complete, width, *_ in images if not complete or width == 0]
 errors = [entry["message"] for entry in log if entry["level"] in ("SEVERE", "ERROR")]
