@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 
+#include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::io {
@@ -64,6 +65,7 @@ void write_points_file(const std::filesystem::path& path, const PointSet& points
   std::error_code ec;
   if (!std::filesystem::is_directory(directory, ec))
     throw invalid_argument("output", path.string(), "its directory does not exist");
+  if (!distributed::is_root()) return;  // a distributed job writes once, from rank 0
   const std::filesystem::path temporary =
       directory / fmt::format(".{}.tmp{}", path.filename().string(), static_cast<long>(getpid()));
   {

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "image_plugin.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -202,7 +203,9 @@ std::string reference_cache_path(const Scene& scene, const std::string& scene_ke
 Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
                       const std::string& cache_dir, bool* cached) {
   const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
-  if (std::filesystem::exists(path)) {
+  // Loaded only if every process of a distributed job sees the entry (their
+  // caches need not be shared): otherwise they render it together.
+  if (!distributed::any(!std::filesystem::exists(path))) {
     if (cached) *cached = true;
     Image image = read_image(path);
     image.samples = spp;
@@ -211,10 +214,15 @@ Image reference_image(const Scene& scene, const std::string& scene_key, const Re
   }
   if (cached) *cached = false;
   Image image = render(scene, reference_settings(settings, spp));
+  // Rounded to what the cache stores (32-bit floats), so a measurement
+  // against a fresh reference equals one against its cached copy.
+  for (double& v : image.rgb) v = static_cast<float>(v);
+  for (double& v : image.variance) v = static_cast<float>(v);
   std::error_code error;
   std::filesystem::create_directories(cache_dir, error);
   if (error) throw invalid_argument("cache", cache_dir, "must be a folder stratum can create: " + error.message());
-  // The variance first: a reference whose image exists always has both.
+  // The variance first: a reference whose image exists always has both
+  // (written by rank 0 of a distributed job).
   write_variance_image(image, variance_sibling(path));
   write_image(image, path);
   return image;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "image_plugin.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
@@ -40,6 +41,7 @@ void write_image(const Image& image, const std::string& path) {
   const fs::path target(path);
   const std::string extension = lowercase_extension(path);
   check_image_path("output", path);
+  if (!distributed::is_root()) return;  // a distributed job writes once, from rank 0
   const bool linear = extension == ".exr" || extension == ".hdr";
   std::vector<float> floats;
   std::vector<unsigned char> bytes;
