@@ -3,14 +3,19 @@
 /// frequency and oscillation; text, JSON and a figure (image + radial plot).
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "stratum/plot.hpp"
+#include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/analysis/spectrum.hpp"
 #include "stratum/io/read_points.hpp"
 #include "stratum/registry.hpp"
+#ifdef STRATUM_HAS_RENDER
+#include "stratum/render/compare.hpp"
+#endif
 #include "stratum/util/error.hpp"
 
 namespace stratum::cli {
@@ -24,6 +29,7 @@ struct SpectrumOptions {
   std::uint64_t seed = 0;
   std::int64_t realizations = 1, threads = 1;
   bool json = false;
+  std::string image, reference;  ///< --image: the spectrum of an image (or of image − reference)
 };
 
 std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
@@ -54,7 +60,53 @@ std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
   return sets;
 }
 
+/// `spectrum --image`: where an image's variation (a render's error) goes
+/// in frequency (analysis/image_spectrum.hpp), of its luminance, or of the
+/// luminance of image − reference.
+void run_image_spectrum(const SpectrumOptions& o) {
+#ifdef STRATUM_HAS_RENDER
+  if (!o.files.empty() || !o.sampler.empty())
+    throw invalid_argument("--image", o.image, "measures an image alone: give no point FILEs and no --sampler");
+  if (!o.png.empty())
+    throw invalid_argument("--output", o.png, "draws point-set spectra; for --image use --json (radial power)");
+  const render::Image image = render::read_image(o.image);
+  std::vector<double> values;
+  if (!o.reference.empty()) {
+    values = render::luminance_error(image, render::read_image(o.reference));
+  } else {
+    render::Image black = image;
+    std::fill(black.rgb.begin(), black.rgb.end(), 0.0);
+    values = render::luminance_error(image, black);
+  }
+  const sa::ImageSpectrum s = sa::image_spectrum(values, image.width, image.height);
+  nlohmann::json power = nlohmann::json::array();
+  for (double p : s.radial_power) power.push_back(std::isfinite(p) ? nlohmann::json(p) : nullptr);
+  const nlohmann::json data = {{"source", o.image},
+                               {"reference", o.reference.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.reference)},
+                               {"width", s.width},
+                               {"height", s.height},
+                               {"variance", s.variance},
+                               {"low_frequency_power", s.low_frequency_power},
+                               {"radial", {{"frequency", s.radial_frequency}, {"power", power}}}};
+  if (o.json) {
+    fmt::print("{}\n", data.dump(2));
+    return;
+  }
+  fmt::print("# spectrum of the luminance of {}{} ({}x{}), normalized: white noise = 1\n", o.image,
+             o.reference.empty() ? "" : " - " + o.reference, s.width, s.height);
+  fmt::print("low_frequency_power {:.6g}   (mean below a quarter of Nyquist; < 1: blue noise)\n", s.low_frequency_power);
+  fmt::print("variance            {:.6g}\n", s.variance);
+  fmt::print("# {:>10} {:>12}\n", "frequency", "power");
+  for (std::size_t r = 0; r < s.radial_power.size(); ++r)
+    fmt::print("  {:>10.5f} {:>12.6g}\n", s.radial_frequency[r], s.radial_power[r]);
+#else
+  throw invalid_argument("--image", o.image, "needs the renderer's image reader (a build with STRATUM_BUILD_RENDER)");
+#endif
+}
+
 void run_spectrum(const SpectrumOptions& o) {
+  if (!o.image.empty()) return run_image_spectrum(o);
+  if (!o.reference.empty()) throw invalid_argument("--reference", o.reference, "applies only to --image");
   require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   if (o.max_frequency)
     require(*o.max_frequency >= 1 && *o.max_frequency <= 1 << 24, "max-frequency", *o.max_frequency,
@@ -122,6 +174,9 @@ void add_spectrum_command(CLI::App& app) {
   command->add_option("--threads", o->threads, "threads (results do not depend on it)")->capture_default_str();
   command->add_option("-o,--output", o->png, "write a PNG: spectrum image and radial plot");
   command->add_flag("--json", o->json, "print JSON (with the full periodogram `power`, row-major, ky then kx)");
+  command->add_option("--image", o->image,
+                      "instead: the power spectrum of an image's luminance (.exr, .png, ...), e.g. a render's error");
+  command->add_option("--reference", o->reference, "with --image: the spectrum of image - reference");
   command->callback([o] { run_spectrum(*o); });
 }
 

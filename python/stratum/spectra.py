@@ -23,7 +23,7 @@ import numpy as np
 from . import _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["spectrum", "pair_correlation"]
+__all__ = ["spectrum", "pair_correlation", "image_spectrum"]
 
 
 def _realizations(x) -> np.ndarray:
@@ -50,6 +50,29 @@ def _positive_int(name, value):
     if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)) or value < 1:
         raise InvalidArgument(f"invalid {name} = {value!r}: must be a positive integer")
     return int(value)
+
+
+def image_spectrum(image, reference=None) -> dict:
+    """The power spectrum of an image (docs/render.md): of its luminance
+    (Rec. 709 weights) when it has 3 channels, of ``image - reference`` when
+    a reference is given (a render's error). Normalized so that white noise
+    has power 1 at every frequency but 0 (the mean is removed): returns
+    ``power`` (array (H, W), zero frequency at [H//2, W//2]),
+    ``low_frequency_power`` (the mean below a quarter of Nyquist: 1 white,
+    < 1 blue noise), ``variance`` and ``radial`` (frequency in cycles per
+    pixel, power), as ``stratum spectrum --image``."""
+    values = np.asarray(image, dtype=np.float64)
+    if reference is not None:
+        ref = np.asarray(reference, dtype=np.float64)
+        if ref.shape != values.shape:
+            raise InvalidArgument(f"invalid reference = an array of shape {ref.shape}: "
+                                  f"must have the image's shape {values.shape}")
+        values = values - ref
+    if values.ndim == 3 and values.shape[2] == 3:
+        values = values @ np.array([0.2126, 0.7152, 0.0722])
+    result = _stratum._image_spectrum(np.ascontiguousarray(values))
+    result["radial"] = {key: np.asarray(value) for key, value in result["radial"].items()}
+    return result
 
 
 def spectrum(x, max_frequency: int | None = None, threads: int = 1) -> dict:

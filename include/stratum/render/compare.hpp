@@ -22,6 +22,12 @@ struct CompareRow {
   double mse = 0, relative_mse = 0, seconds = 0, efficiency = 0;
   double mse_ratio = 1, efficiency_ratio = 1;  ///< baseline / this for MSE; this / baseline for efficiency
   std::uint32_t passes = 1;    ///< equal time: independent renders averaged (1 at equal samples)
+  /// Where the error goes (analysis/image_spectrum.hpp): the power spectrum
+  /// of the luminance of render − reference, normalized so white noise is 1;
+  /// low_frequency_power is its mean below a quarter of Nyquist (< 1: blue
+  /// noise). NaN and empty for images under 4 pixels a side.
+  double low_frequency_power = 0;
+  std::vector<double> error_radial_frequency, error_radial_power;
   std::string variance_path;   ///< where its variance image was written (CompareOptions::variance_dir)
 };
 
@@ -108,6 +114,9 @@ Image render_equal_time(const Accelerator& accelerator, const RenderSettings& se
 /// check_variance_path). Temporary file renamed on success, as write_image.
 void write_variance_image(const Image& image, const std::string& path);
 void check_variance_path(const std::string& argument, const std::string& path);
+
+/// The luminance (Rec. 709 weights) of image − reference, per pixel, row-major.
+std::vector<double> luminance_error(const Image& image, const Image& reference);
 
 /// A fingerprint of everything in a scene that changes its image (camera,
 /// materials, every shape's numbers and mesh, lights), as 16 hex digits:
