@@ -11,6 +11,7 @@
 
 #include "image_plugin.hpp"
 #include "stratum/distributed.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -131,6 +132,13 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
                                "allowed keys are label, integrator, spp, light_samples, light_strategy, hemisphere, "
                                "sampler, randomize, time_pattern, max_depth, pixel_centers");
     }
+    // "sampler" is a spec (docs/samplers.md); "randomize" its :RANDOMIZER part, given once.
+    const SamplerSpec spec = combine_sampler_options(s.sampler.sampler, {}, s.sampler.randomize);
+    if (!spec.params.empty())
+      throw invalid_argument(where + ".sampler", s.sampler.sampler,
+                             "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
+    s.sampler.sampler = spec.name;
+    s.sampler.randomize = spec.randomize;
     validate_settings(s);
     result.push_back(std::move(config));
   }
