@@ -33,12 +33,8 @@ struct RenderOptions {
 void run_render(RenderOptions& options) {
   require(options.spp >= 1 && options.spp <= (std::int64_t{1} << 24), "spp", options.spp, "must be in [1, 2^24]");
   options.settings.sampler.spp = static_cast<std::uint32_t>(options.spp);
-  const SamplerSpec spec = options.sampler.spec();
-  if (!spec.params.empty())
-    throw invalid_argument("sampler", format_sampler_spec(spec),
-                           "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
-  options.settings.sampler.sampler = spec.name;
-  options.settings.sampler.randomize = spec.randomize;
+  render::set_pixel_sampler(options.settings.sampler, "sampler", options.sampler.sampler, options.sampler.params,
+                            options.sampler.randomize);
   options.settings.sampler.seed = options.sampler.seed;
   render::validate_settings(options.settings);
   require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",

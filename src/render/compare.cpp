@@ -133,16 +133,21 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
                                "sampler, randomize, time_pattern, max_depth, pixel_centers");
     }
     // "sampler" is a spec (docs/samplers.md); "randomize" its :RANDOMIZER part, given once.
-    const SamplerSpec spec = combine_sampler_options(s.sampler.sampler, {}, s.sampler.randomize);
-    if (!spec.params.empty())
-      throw invalid_argument(where + ".sampler", s.sampler.sampler,
-                             "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
-    s.sampler.sampler = spec.name;
-    s.sampler.randomize = spec.randomize;
+    set_pixel_sampler(s.sampler, where + ".sampler", s.sampler.sampler, {}, s.sampler.randomize);
     validate_settings(s);
     result.push_back(std::move(config));
   }
   return result;
+}
+
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
+                       const std::vector<std::string>& params, const std::string& randomize) {
+  const SamplerSpec parsed = combine_sampler_options(spec, params, randomize);
+  if (!parsed.params.empty())
+    throw invalid_argument(argument, format_sampler_spec(parsed),
+                           "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
+  settings.sampler = parsed.name;
+  settings.randomize = parsed.randomize;
 }
 
 double mean_squared_error(const Image& image, const Image& reference) {
