@@ -10,7 +10,7 @@ namespace {
 constexpr const char* spec_footer =
     "Sampler specs: NAME[(KEY=VALUE,...)][:RANDOMIZER], e.g. sobol:owen, poisson-disk(periodic=1),\n"
     "jittered(strata=4x8), lattice(generator=1,55,133):cp. -p KEY=VALUE adds a parameter, --randomize the\n"
-    "randomizer; giving one twice is an error. See docs/samplers.md and `stratum samplers`.";
+    "randomizer; giving one twice is an error. See docs/samplers.md and `stratum samplers`.\n";
 
 std::int64_t parse_threads(const std::string& text) {
   std::int64_t value = 0;
@@ -37,7 +37,7 @@ CLI::Option* add_sampler_options(CLI::App& command, SamplerOptions& options, con
                                  const std::string& seed_help) {
   auto* sampler = command.add_option("-s,--sampler", options.sampler,
                                      sampler_help + ": a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md)");
-  command.add_option("-p,--param", options.params, "sampler parameter KEY=VALUE (repeatable; see `stratum samplers`)");
+  command.add_option("-p,--param", options.params, "sampler parameter KEY=VALUE (repeatable; `stratum samplers --json` lists them)");
   command.add_option("--randomize", options.randomize,
                      "the sampler's randomizer, as the :RANDOMIZER of the spec (default: the sampler's own)");
   add_seed_option(command, options.seed, seed_help);
@@ -49,6 +49,7 @@ CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::
   return command
       .add_option_function<std::string>(
           "--seed", [&seed](const std::string& text) { seed = parse_seed(text); }, help + " (an integer in [0, 2^64))")
+      ->type_name("UINT")
       ->default_str(std::to_string(seed));
 }
 
@@ -58,6 +59,7 @@ CLI::Option* add_threads_option(CLI::App& command, std::int64_t& threads, const 
           "--threads",
           [&threads](const std::string& text) { threads = static_cast<std::int64_t>(resolve_threads(parse_threads(text))); },
           help + " (0: every core)")
+      ->type_name("INT")
       ->default_str(std::to_string(threads));
 }
 
@@ -66,6 +68,7 @@ CLI::Option* add_threads_option(CLI::App& command, unsigned& threads, const std:
       .add_option_function<std::string>(
           "--threads", [&threads](const std::string& text) { threads = resolve_threads(parse_threads(text)); },
           help + " (0: every core)")
+      ->type_name("INT")
       ->default_str(std::to_string(threads));
 }
 

@@ -70,8 +70,9 @@ def integrands() -> list[dict]:
 
 def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | None = None, seed: int = 0,
               randomize: str | None = None, runs: int = 1, threads: int = 1, **params) -> dict:
-    """Estimate `integrand` over [0,1]^d with `n` points of `sampler`
-    ("name" or "name:randomizer").
+    """Estimate `integrand` over [0,1]^d with `n` points of `sampler`, a
+    spec NAME[(KEY=VALUE,...)][:RANDOMIZER] ("sobol:owen",
+    "jittered(strata=4x8)"; docs/samplers.md).
 
     runs=1: one point set; standard_error is s/sqrt(n) of its values
     (standard_error_kind "iid": right for i.i.d. points, only indicative for
@@ -91,8 +92,9 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
 
 def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | None = None, seed: int = 0,
              threads: int = 1, **params) -> dict:
-    """Convergence study: for each sampler ("name" or "name:randomizer"; a
-    list or a comma-separated string) and each N, `runs` independent
+    """Convergence study: for each sampler (a spec
+    NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md; a list, or one string
+    split on the commas outside parentheses) and each N, `runs` independent
     randomizations (run r of sampler s at N seeded with hash(seed, s, N, r)).
 
     n: "A:B" (powers of two from A to B), "A:B:F" (A, A*F, ... up to B) or a
