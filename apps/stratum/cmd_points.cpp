@@ -50,7 +50,12 @@ void add_points_command(CLI::App& app) {
   add_sampler_options(*command, options->sampler, "the sampler")->required();
   command->add_option("-n", options->n, "number of points (leave out for a maximal Poisson-disk set with --radius)");
   command->add_option("-d", options->d, "dimensions")->capture_default_str();
-  command->add_option("--start", options->start, "index of the first point (sequences only)")->capture_default_str();
+  command
+      ->add_option_function<std::string>(
+          "--start", [options](const std::string& text) { options->start = parse_uint64("start", text); },
+          "index of the first point (sequences only; an integer in [0, 2^64))")
+      ->type_name("UINT")
+      ->default_str("0");
   command->add_option("--radius", options->radius, "Poisson-disk radius");
   add_threads_option(*command, options->threads, "threads for bulk generation");
   command->add_option("--format", options->format, "txt|csv|npy")->capture_default_str();

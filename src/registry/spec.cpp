@@ -307,15 +307,17 @@ SamplerSpec combine_sampler_options(std::string_view text, const std::vector<std
   return std::move(spec);
 }
 
-std::uint64_t parse_seed(std::string_view text) {
+std::uint64_t parse_uint64(std::string_view argument, std::string_view text) {
   std::uint64_t value = 0;
   const char* end = text.data() + text.size();
   const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
   const auto [ptr, error] = std::from_chars(text.data(), end, value);
   if (!digits || error != std::errc() || ptr != end)
-    throw invalid_argument("seed", shown(text), "must be an integer in [0, 2^64) = [0, 18446744073709551615]");
+    throw invalid_argument(argument, shown(text), "must be an integer in [0, 2^64) = [0, 18446744073709551615]");
   return value;
 }
+
+std::uint64_t parse_seed(std::string_view text) { return parse_uint64("seed", text); }
 
 unsigned resolve_threads(std::int64_t threads) {
   require(threads >= 0 && threads <= max_threads, "threads", threads,

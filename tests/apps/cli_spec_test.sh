@@ -118,6 +118,8 @@ for seed in -1 18446744073709551616 99999999999999999999999 1e3 abc 0x10 ''; do
     grep -qF -- "invalid seed = ${seed:-''}" "$tmp/err" && ok || fail "$sub --seed '$seed': $(cat "$tmp/err")"
   done
 done
+expect_error "invalid start = -1: must be an integer in" points -s sobol -n 2 --start -1
+expect_error "invalid start = 1e3: must be an integer in" points -s sobol -n 2 --start 1e3
 top=$("$stratum" points -s random -n 2 --seed 18446744073709551615) && ok || fail "--seed 2^64 - 1 refused"
 below=$("$stratum" points -s random -n 2 --seed 18446744073709551614)
 [ -n "$top" ] && [ "$top" != "$below" ] && ok || fail "seeds 2^64 - 1 and 2^64 - 2 give the same points"

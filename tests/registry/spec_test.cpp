@@ -180,6 +180,12 @@ TEST(SamplerSpec, SeedsAreExactlyTheIntegersBelowTwoToThe64) {
   }
 }
 
+TEST(SamplerSpec, Uint64NamesItsArgument) {
+  EXPECT_EQ(parse_uint64("start", "7"), 7u);
+  expect_contains(error_of([] { parse_uint64("start", "-1"); }),
+                  {"invalid start = -1: must be an integer in [0, 2^64)"});
+}
+
 TEST(SamplerSpec, ThreadRuleZeroIsEveryCore) {
   EXPECT_EQ(resolve_threads(1), 1u);
   EXPECT_EQ(resolve_threads(1024), 1024u);

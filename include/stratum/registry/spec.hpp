@@ -64,8 +64,11 @@ std::pair<std::string, std::string> parse_key_value(std::string_view option, std
 SamplerSpec combine_sampler_options(std::string_view spec, const std::vector<std::string>& params,
                                     std::string_view randomize);
 
-/// A seed: exactly the decimal integers in [0, 2^64) ("-1", "1e3", "0x10",
-/// "18446744073709551616" are refused naming the value).
+/// Exactly the decimal integers in [0, 2^64) ("-1", "1e3", "0x10",
+/// "18446744073709551616" are refused naming `argument` and the value).
+std::uint64_t parse_uint64(std::string_view argument, std::string_view text);
+
+/// A seed: parse_uint64("seed", text).
 std::uint64_t parse_seed(std::string_view text);
 
 /// Largest thread count a face may ask for.
