@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/util/error.hpp"
 
@@ -100,8 +101,8 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--variance-dir", o->run.variance_dir, "write each configuration's variance image there (EXR)");
   command->add_option("--width", o->width, "image width")->capture_default_str();
   command->add_option("--height", o->height, "image height")->capture_default_str();
-  command->add_option("--threads", o->threads, "threads")->capture_default_str();
-  command->add_option("--seed", o->seed, "seed of the configurations")->capture_default_str();
+  add_threads_option(*command, o->threads, "threads");
+  add_seed_option(*command, o->seed, "seed of the configurations");
   command->add_flag("--json", o->json, "JSON output");
   command->callback([o] { run_compare(*o); });
 }

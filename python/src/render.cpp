@@ -95,6 +95,7 @@ void bind_render(py::module_& m) {
         s.hemisphere = hemisphere;
         s.max_depth = max_depth;
         s.sampler = render::PixelSamplerSettings{sampler, randomize, seed, spp, time_pattern};
+        render::set_pixel_sampler(s.sampler, "sampler", sampler, {}, randomize);
         s.threads = threads;
         s.passes = passes;
         s.pixel_centers = pixel_centers;

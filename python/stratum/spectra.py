@@ -20,7 +20,7 @@ import numbers
 
 import numpy as np
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
 __all__ = ["spectrum", "pair_correlation", "image_spectrum"]
@@ -92,7 +92,7 @@ def spectrum(x, max_frequency: int | None = None, threads: int = 1) -> dict:
     if max_frequency is None:
         max_frequency = min(1024, max(16, math.ceil(2.5 * math.sqrt(max(n, 1)))))
     k = _positive_int("max_frequency", max_frequency)
-    result = _stratum._spectrum(array, k, _positive_int("threads", threads))
+    result = _stratum._spectrum(array, k, _checks.threads(threads))
     result["frequencies"] = np.arange(-k, k + 1) / result["frequency_scale"]
     result["radial"] = {key: np.asarray(value) for key, value in result["radial"].items()}
     result["anisotropy_db"] = result["radial"]["anisotropy_db"]
@@ -118,5 +118,5 @@ def pair_correlation(x, radii=None, sigma: float | None = None, threads: int = 1
         radii = default_radii if radii is None else radii
         sigma = default_sigma if sigma is None else sigma
     radii = np.atleast_1d(np.asarray(radii, dtype=np.float64)).ravel().tolist()
-    result = _stratum._pair_correlation(array, radii, float(sigma), _positive_int("threads", threads))
+    result = _stratum._pair_correlation(array, radii, float(sigma), _checks.threads(threads))
     return {"r": np.asarray(result["r"]), "g": np.asarray(result["g"]), "sigma": result["sigma"]}

@@ -12,6 +12,7 @@
 #include "image_plugin.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/distributed.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -132,10 +133,22 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
                                "allowed keys are label, integrator, spp, light_samples, light_strategy, hemisphere, "
                                "sampler, randomize, time_pattern, max_depth, pixel_centers");
     }
+    // "sampler" is a spec (docs/samplers.md); "randomize" its :RANDOMIZER part, given once.
+    set_pixel_sampler(s.sampler, where + ".sampler", s.sampler.sampler, {}, s.sampler.randomize);
     validate_settings(s);
     result.push_back(std::move(config));
   }
   return result;
+}
+
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
+                       const std::vector<std::string>& params, const std::string& randomize) {
+  const SamplerSpec parsed = combine_sampler_options(spec, params, randomize);
+  if (!parsed.params.empty())
+    throw invalid_argument(argument, format_sampler_spec(parsed),
+                           "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
+  settings.sampler = parsed.name;
+  settings.randomize = parsed.randomize;
 }
 
 double mean_squared_error(const Image& image, const Image& reference) {

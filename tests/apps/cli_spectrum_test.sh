@@ -71,9 +71,9 @@ v=$("$stratum" discrepancy --sampler n-rooks -n 50 -d 3 --measure latin --json |
 [ "$v" = 1 ] && ok || fail "n-rooks is Latin, got $v"
 v=$("$stratum" discrepancy --sampler grid -n 64 -d 2 --measure min-distance --json | $py -c 'import json,sys; print(json.load(sys.stdin)["measures"][0]["value"])')
 [ "$v" = 0.125 ] && ok || fail "grid min distance 1/8, got $v"
-expect_error "invalid base = 1" discrepancy --sampler sobol -n 256 -d 2 --measure t-value -p base=1
+expect_error "invalid base = 1" discrepancy --sampler sobol -n 256 -d 2 --measure t-value --measure-param base=1
 expect_error "invalid n = 100" discrepancy --sampler sobol -n 100 -d 2 --measure t-value
-expect_error "invalid toroidal = 2" discrepancy --sampler random -n 10 -d 2 --measure min-distance -p toroidal=2
+expect_error "invalid toroidal = 2" discrepancy --sampler random -n 10 -d 2 --measure min-distance --measure-param toroidal=2
 
 # Bad input to spectrum.
 expect_error "invalid max-frequency = 0" spectrum --sampler random -n 100 -k 0

@@ -62,6 +62,13 @@ std::vector<CompareConfig> builtin_comparison(const std::string& name, unsigned 
 /// "sampler": ..., "randomize": ..., "time_pattern": ..., "max_depth": ...}, ...]
 std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned threads, std::uint64_t seed);
 
+/// Sets the pixel sampler's name and randomizer from a sampler spec
+/// (docs/samplers.md) with -p items and a separate randomizer folded in
+/// (combine_sampler_options); `argument` names the spec in errors. The pixel
+/// sampler takes no sampler parameters, so a spec with some is refused.
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
+                       const std::vector<std::string>& params, const std::string& randomize);
+
 /// The converged reference for `settings`' estimand (integrator, depth,
 /// scene, resolution): loaded from `cache_dir` when there, else rendered
 /// with `spp` samples of owen-hash Sobol' (solid-angle light sampling,
