@@ -11,8 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/render/compare.hpp"
@@ -23,22 +21,9 @@ namespace {
 
 using namespace stratum::render;
 
-const char* penumbra = R"({"camera": {"position": [0, 6, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 60,
-  "resolution": [64, 64]},
- "materials": {"floor": {"reflectance": [0.8, 0.8, 0.8]}, "bar": {"reflectance": [0.5, 0.5, 0.5]},
-               "lamp": {"reflectance": [0, 0, 0], "emission": [6, 6, 6]}},
- "shapes": [
-  {"type": "quad", "corner": [-8, 0, 8], "edge_u": [16, 0, 0], "edge_v": [0, 0, -16], "material": "floor"},
-  {"type": "quad", "corner": [3, 5, -4], "edge_u": [5, 0, 0], "edge_v": [0, 0, 8], "material": "lamp"},
-  {"type": "quad", "corner": [-2.2, 2, -5], "edge_u": [0.5, 0, 0], "edge_v": [0, 0, 10], "material": "bar"},
-  {"type": "quad", "corner": [-0.2, 2, -5], "edge_u": [0.5, 0, 0], "edge_v": [0, 0, 10], "material": "bar"},
-  {"type": "quad", "corner": [1.8, 2, -5], "edge_u": [0.5, 0, 0], "edge_v": [0, 0, 10], "material": "bar"}]})";
-
 Scene penumbra_scene() {
-  const auto path = std::filesystem::temp_directory_path() / "stratum-penumbra-test.json";
-  std::ofstream(path) << penumbra;
-  Scene scene = load_scene(path.string());
-  std::filesystem::remove(path);
+  Scene scene = stratum::render::penumbra_scene();
+  scene.camera.width = scene.camera.height = 64;
   return scene;
 }
 
@@ -93,6 +78,14 @@ TEST(BlueNoiseError, ZSobolPushesTheErrorToHighFrequencies) {
   EXPECT_LT(low[1], 0.5) << "zsobol's error should be blue";
   EXPECT_LT(mse[1], 1.1 * mse[0]);
   EXPECT_LT(blurred[1], blurred[0]);
+}
+
+TEST(BlueNoiseError, TheBuiltInPenumbraSceneIsTheSceneFile) {
+  const Scene file = load_scene(std::string(STRATUM_SOURCE_DIR) + "/scenes/penumbra.json");
+  EXPECT_EQ(scene_fingerprint(file), scene_fingerprint(stratum::render::penumbra_scene()));
+  Scene moved = stratum::render::penumbra_scene();
+  moved.shapes[2].corner.x += 0.1;  // the fingerprint sees a change: the check can fail
+  EXPECT_NE(scene_fingerprint(file), scene_fingerprint(moved));
 }
 
 }  // namespace

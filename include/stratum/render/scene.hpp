@@ -90,6 +90,11 @@ struct Scene {
 /// of field).
 Scene cornell_box();
 
+/// A floor in the penumbras of three bars under a large light, seen from
+/// above (128 × 128): error over the whole image, for measuring where a
+/// render's error goes (docs/render.md; the same as scenes/penumbra.json).
+Scene penumbra_scene();
+
 /// Reads and validates a JSON scene (docs/scenes.md). Throws
 /// stratum::invalid_argument naming the line and column of a syntax error,
 /// or the key ("shapes[2].radius") of an unknown key or a bad value.
