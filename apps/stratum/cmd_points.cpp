@@ -22,7 +22,7 @@ struct PointsOptions {
   std::string randomize;
   std::optional<double> radius;
   std::int64_t threads = 1;
-  std::string format = "txt";
+  std::string format;
   std::string output;
   std::vector<std::string> params;
 };
@@ -48,9 +48,9 @@ void run_points(const PointsOptions& options) {
       throw invalid_argument("param", item, "must be written key=value");
     request.params[item.substr(0, equals)] = item.substr(equals + 1);
   }
-  const io::PointFormat format = io::parse_point_format(options.format);
+  TableOutput table_output(options.output, options.format);  // checked before the work
   const PointSet points = generate_points(options.sampler, request);
-  write_table(options.output, points, format);
+  table_output.write(points);
 }
 }  // namespace
 
@@ -66,7 +66,7 @@ void add_points_command(CLI::App& app) {
                       "none|owen|owen-hash|xor|lms|permute|cp (default: the sampler's own)");
   command->add_option("--radius", options->radius, "Poisson-disk radius");
   command->add_option("--threads", options->threads, "threads for bulk generation")->capture_default_str();
-  command->add_option("--format", options->format, "txt|csv|npy")->capture_default_str();
+  command->add_option("--format", options->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", options->output, "output file (stdout when absent)");
   command->add_option("-p,--param", options->params, "sampler parameter key=value (repeatable)");
   command->callback([options] { run_points(*options); });

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/spectrum.hpp"
 #include "stratum/io/read_points.hpp"
@@ -55,6 +56,7 @@ std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
 }
 
 void run_spectrum(const SpectrumOptions& o) {
+  const auto figure = plot::prepare_plot("output", o.png);  // checked before the work
   require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   if (o.max_frequency)
     require(*o.max_frequency >= 1 && *o.max_frequency <= 1 << 24, "max-frequency", *o.max_frequency,
@@ -87,7 +89,7 @@ void run_spectrum(const SpectrumOptions& o) {
                          {"oscillation_window", {figures.oscillation_from, figures.oscillation_to}},
                          {"oscillation_window_is_cut", figures.window_is_cut},
                          {"power", p.power}};
-  if (!o.png.empty()) plot::write_plot("spectrum", data, o.png);
+  if (figure) plot::write_plot("spectrum", data, *figure);
   if (o.json) {
     fmt::print("{}\n", data.dump(2));
     return;

@@ -23,7 +23,7 @@ struct WarpOptions {
   std::string sampler = "random";
   std::uint64_t seed = 0;
   std::vector<std::string> params;
-  std::string format = "txt";
+  std::string format;
   std::string output;
   bool list = false;
 };
@@ -32,11 +32,8 @@ struct WarpOptions {
 std::vector<double> parse_numbers(const std::string& key, const std::string& text) {
   std::string body = text;
   if (!text.empty() && text[0] == '@') {
-    std::ifstream file(text.substr(1));
-    if (!file) throw invalid_argument(key, text, "cannot read the file " + text.substr(1));
-    std::ostringstream content;
-    content << file.rdbuf();
-    body = content.str();
+    // A regular file only: a FIFO or /dev/zero would never end.
+    body = io::read_regular_file(key, text.substr(1), std::uint64_t{1} << 30);
   }
   for (char& c : body)
     if (c == ',' || c == '\n' || c == '\t' || c == '\r') c = ' ';
@@ -72,7 +69,7 @@ void run_warp(const WarpOptions& options) {
     const std::string key = item.substr(0, equals);
     params[key] = parse_numbers(key, item.substr(equals + 1));
   }
-  const io::PointFormat format = io::parse_point_format(options.format);
+  TableOutput table_output(options.output, options.format);  // checked before the work
   const auto warp = make_warp(options.map, params);
   SamplerRequest request;
   request.n = static_cast<std::uint64_t>(options.n);
@@ -88,7 +85,7 @@ void run_warp(const WarpOptions& options) {
     for (std::size_t k = 0; k < out_dim; ++k) rows.data[i * rows.d + k] = points[i * out_dim + k];
     rows.data[i * rows.d + out_dim] = pdf[i];
   }
-  write_table(options.output, rows, format);
+  table_output.write(rows);
 }
 }  // namespace
 
@@ -101,7 +98,7 @@ void add_warp_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--seed", options->seed, "seed of the sampler")->capture_default_str();
   command->add_option("-p,--param", options->params, "warp parameter key=v1,v2,... or key=@FILE (repeatable)");
-  command->add_option("--format", options->format, "txt|csv|npy")->capture_default_str();
+  command->add_option("--format", options->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", options->output, "output file (stdout when absent)");
   command->add_flag("--list", options->list, "list the warps with their domains and parameters");
   command->callback([options] { run_warp(*options); });

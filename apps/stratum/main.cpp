@@ -3,8 +3,10 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <system_error>
 
 #include "commands.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
 
 int main(int argc, char** argv) {
@@ -31,8 +33,10 @@ int main(int argc, char** argv) {
   stratum::cli::add_study_mitchell_command(*study);
   stratum::cli::add_study_dimension_command(*study);
   stratum::cli::add_study_importance_command(*study);
+  stratum::io::install_signal_cleanup();  // Ctrl-C or SIGTERM: no staging file is left behind
   try {
     app.parse(argc, argv);
+    stratum::io::check_stdout();  // output lost on a full disk or a closed stdout is an error
   } catch (const CLI::ConversionError& e) {
     fmt::print(stderr, "stratum: error: {}: not a valid number for this option (see --help)\n", e.what());
     return 2;
@@ -41,6 +45,9 @@ int main(int argc, char** argv) {
   } catch (const stratum::invalid_argument& e) {
     fmt::print(stderr, "stratum: error: {}\n", e.what());
     return 2;
+  } catch (const std::system_error& e) {  // fmt::print to a stdout that lost it (a full disk, a closed stdout)
+    fmt::print(stderr, "stratum: error: stdout: output was lost ({})\n", e.code().message());
+    return 1;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "stratum: error: out of memory\n");
     return 3;
