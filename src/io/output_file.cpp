@@ -196,6 +196,8 @@ void OutputFile::prepare() {
       if (::access(target_.c_str(), W_OK) != 0) fail("must be writable (" + os_error(errno) + ")");
       existed_ = true;
       mode_ = info.st_mode & 07777;
+      owner_ = info.st_uid;
+      group_ = info.st_gid;
     } else if (S_ISCHR(info.st_mode) || S_ISFIFO(info.st_mode)) {
       if (::access(target_.c_str(), W_OK) != 0) fail("must be writable (" + os_error(errno) + ")");
       special_ = true;
@@ -211,7 +213,7 @@ void OutputFile::prepare() {
                           : target_.has_parent_path() ? target_.parent_path() : fs::path(".");
   std::error_code error;
   if (!fs::is_directory(folder, error)) fail("needs the folder " + folder.string() + ", which does not exist");
-  if (!special_) remove_stale_staging(folder);
+  remove_stale_staging(folder);
   std::string name = target_.filename().string();
   if (name.size() > 160) name.resize(160);  // the staging name stays under NAME_MAX
   name = "." + name + staging_marker + std::to_string(::getpid()) + "-" + std::to_string(staging_counter++) +
@@ -219,7 +221,12 @@ void OutputFile::prepare() {
   const std::string staging = (folder / name).string();
   const int fd = ::open(staging.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, existed_ ? 0600 : 0666);
   if (fd < 0) fail("cannot be written: its folder " + folder.string() + " refuses a new file (" + os_error(errno) + ")");
-  if (existed_) ::fchmod(fd, mode_);  // the replaced file's bits, not the umask's
+  if (existed_) {
+    // The replaced file's owner (where this user may give it) and bits, not the umask's.
+    // (Not root: the new file is this user's, as after any editor's rewrite.)
+    [[maybe_unused]] const int given = ::fchown(fd, static_cast<uid_t>(owner_), static_cast<gid_t>(group_));
+    ::fchmod(fd, mode_);
+  }
   ::close(fd);
   staging_ = staging;
   slot_ = register_staging(staging_);

@@ -85,6 +85,16 @@ TEST(OutputFile, KeepsTheReplacedFilesPermissions) {
   ASSERT_EQ(stat(target.c_str(), &info), 0);
   EXPECT_EQ(info.st_mode & 07777, 0640u);
   EXPECT_EQ(slurp(target), "new\n");
+  if (geteuid() == 0) {  // root rewriting another user's file gives it back to that user
+    ASSERT_EQ(chown(target.c_str(), 4321, 4322), 0);
+    io::OutputFile again("output", target.string());
+    write_text(again, "newer\n");
+    again.commit();
+    ASSERT_EQ(stat(target.c_str(), &info), 0);
+    EXPECT_EQ(info.st_uid, 4321u);
+    EXPECT_EQ(info.st_gid, 4322u);
+    EXPECT_EQ(info.st_mode & 07777, 0640u);
+  }
   fs::remove_all(dir);
 }
 

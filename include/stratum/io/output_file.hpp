@@ -6,8 +6,9 @@
 /// written through its staging file, and committed at the end:
 /// - a regular file, or a path not there yet: the staging file is hidden in
 ///   the target's folder (`.NAME.stratum-tmp.PID-K.EXT`), written, checked,
-///   synced, given the existing file's permission bits and renamed over the
-///   target; a failure leaves the target as it was and no staging file;
+///   synced, given the existing file's permission bits (and owner, where
+///   this user may) and renamed over the target; a failure leaves the
+///   target as it was and no staging file;
 /// - a symbolic link: the file it points to is the target (written through,
 ///   the link kept);
 /// - a regular file with more than one hard link: refused (replacing it would
@@ -65,7 +66,7 @@ class OutputFile {
   std::filesystem::path target_;
   std::string staging_;
   bool prepared_ = false, special_ = false, existed_ = false, committed_ = false;
-  unsigned mode_ = 0;  // permission bits of the file replaced (existed_)
+  unsigned mode_ = 0, owner_ = 0, group_ = 0;  // of the file replaced (existed_)
   std::uint64_t device_ = 0, inode_ = 0;
   int slot_ = -1;  // in the registry of staging files removed on a signal
   friend class OutputGroup;
