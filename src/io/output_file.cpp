@@ -76,18 +76,6 @@ long staging_pid(const std::string& name) {
   return end != digits && *end == '-' && pid > 0 ? pid : 0;
 }
 
-/// Removes the staging files in `folder` left by processes that are gone (kill -9).
-void remove_stale_staging(const fs::path& folder) {
-  std::error_code error;
-  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
-    const std::string name = it->path().filename().string();
-    const long pid = staging_pid(name);
-    if (pid == 0 || pid == static_cast<long>(::getpid())) continue;
-    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
-    std::error_code ignored;
-    if (fs::is_regular_file(fs::symlink_status(it->path(), ignored))) fs::remove(it->path(), ignored);
-  }
-}
 
 /// The file a path names after following symbolic links (the last one may dangle).
 fs::path follow_links(const fs::path& path) {
@@ -368,6 +356,35 @@ void OutputGroup::commit() {
       throw;
     }
   }
+}
+
+void remove_stale_staging(const fs::path& folder) {
+  std::error_code error;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    const long pid = staging_pid(it->path().filename().string());
+    if (pid == 0 || pid == static_cast<long>(::getpid())) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    stale.push_back(it->path());
+  }
+  for (const auto& path : stale) {  // left by a kill -9
+    std::error_code ignored;
+    const auto status = fs::symlink_status(path, ignored);
+    if (fs::is_regular_file(status)) fs::remove(path, ignored);
+    else if (fs::is_directory(status)) fs::remove_all(path, ignored);
+  }
+}
+
+fs::path make_staging_folder(const fs::path& folder, const std::string& name) {
+  remove_stale_staging(folder);
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    const fs::path path = folder / ("." + name + staging_marker + std::to_string(::getpid()) + "-" +
+                                    std::to_string(staging_counter++));
+    if (::mkdir(path.c_str(), 0777) == 0) return path;
+    if (errno != EEXIST)
+      throw invalid_argument("directory", folder.string(), "must be a folder this user can write to (" + os_error(errno) + ")");
+  }
+  throw invalid_argument("directory", folder.string(), "has no room for a staging folder");
 }
 
 void install_signal_cleanup() {

@@ -57,13 +57,6 @@ struct StagingFolder {
   }
 };
 
-fs::path make_staging(const fs::path& directory) {
-  std::string pattern = (directory / ".report-partial-XXXXXX").string();
-  if (!mkdtemp(pattern.data()))
-    throw invalid_argument("directory", directory.string(), "a folder this user can write to");
-  return pattern;
-}
-
 unsigned resolve_threads(unsigned threads) {
   return threads ? threads : std::max(1u, std::thread::hardware_concurrency());
 }
@@ -98,7 +91,7 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
   io::OutputFile* report_json = pages.add("directory", (directory / "report.json").string());
   io::OutputFile* index_html = pages.add("directory", (directory / "index.html").string());
   pages.prepare();
-  StagingFolder staging{make_staging(directory)};
+  StagingFolder staging{io::make_staging_folder(directory, "report")};  // a kill -9 leftover: removed by the next run
   fs::create_directory(staging.path / "figures");
 
   const unsigned threads = resolve_threads(options.threads);

@@ -186,11 +186,18 @@ TEST(OutputFile, RemovesStagingFilesOfDeadProcessesOnly) {
   const std::string alive = ".b.txt" + std::string(io::staging_marker) + std::to_string(getppid()) + "-0.txt";
   std::ofstream(dir / dead) << "left by kill -9\n";
   std::ofstream(dir / alive) << "another process, still writing\n";
+  const std::string dead_folder = ".report" + std::string(io::staging_marker) + std::to_string(child) + "-3";
+  fs::create_directories(dir / dead_folder / "figures");
   io::OutputFile file("output", (dir / "c.txt").string());
   write_text(file, "c\n");
   file.commit();
   EXPECT_FALSE(fs::exists(dir / dead));
+  EXPECT_FALSE(fs::exists(dir / dead_folder));
   EXPECT_TRUE(fs::exists(dir / alive));
+  const fs::path folder = io::make_staging_folder(dir, "page");
+  EXPECT_TRUE(fs::is_directory(folder));
+  EXPECT_EQ(folder.filename().string().rfind(".page" + std::string(io::staging_marker) + std::to_string(getpid()) + "-", 0), 0u)
+      << folder;
   fs::remove_all(dir);
 }
 

@@ -113,6 +113,14 @@ void refuse_special_file(const std::string& argument, const std::string& path);
 std::string read_regular_file(const std::string& argument, const std::string& path,
                               std::uint64_t max_bytes = std::uint64_t{1} << 32);
 
+/// Removes the staging files and folders in `folder` whose process is gone
+/// (prepare() calls it for its own folder).
+void remove_stale_staging(const std::filesystem::path& folder);
+
+/// Creates a staging folder `FOLDER/.NAME.stratum-tmp.PID-K` (after removing
+/// stale ones there): for outputs built as a folder, as the report's page.
+std::filesystem::path make_staging_folder(const std::filesystem::path& folder, const std::string& name);
+
 /// The prefix of staging files, for tests and docs: ".NAME" + this + "PID-K".
 inline constexpr const char* staging_marker = ".stratum-tmp.";
 
