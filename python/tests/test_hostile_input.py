@@ -58,3 +58,16 @@ def test_a_triangle_index_beyond_32_bits_is_an_error(tmp_path):
                      '"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [[0, 1, 4294967298]], "material": "m"}]}')
     with pytest.raises(stratum.InvalidArgument, match=r"indices\[0\]\[2\] = 4294967298"):
         stratum.render(scene=str(scene), spp=1)
+
+
+def test_deeply_nested_configs_are_refused():
+    deep = []
+    for _ in range(100000):
+        deep = [deep]
+    with pytest.raises(stratum.InvalidArgument, match="invalid configs = .*deeper than 256 levels"):
+        stratum.compare(configs=deep)
+    shallow = {"spp": 1}  # deep enough for the C++ cap, not for Python's recursion limit
+    for _ in range(300):
+        shallow = [shallow]
+    with pytest.raises(stratum.InvalidArgument, match=r"nests arrays and objects deeper than 256 levels at line 1, column 257"):
+        stratum.compare(configs=shallow)
