@@ -86,11 +86,11 @@ PointFormat resolve_point_format(const std::string& output, const std::string& f
                            fmt::format("does not match the output {} (a .{} file): leave --format out, or name the "
                                        "file .{}, which is how stratum reads it back",
                                        output, format_name(*by_extension), format_name(chosen)));
-  if (to_file && !by_extension && chosen == PointFormat::npy)
+  if (to_file && !by_extension && chosen != PointFormat::txt)  // any other name is read back as text
     throw invalid_argument("format", format,
-                           fmt::format("needs an output name ending in .npy (not {}): stratum reads a file as .npy "
-                                       "by its extension",
-                                       output));
+                           fmt::format("needs an output name ending in .{0} (not {1}): stratum reads a file as .{0} "
+                                       "by its extension, any other name as whitespace text",
+                                       format_name(chosen), output));
   return chosen;
 }
 

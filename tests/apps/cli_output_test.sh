@@ -42,6 +42,7 @@ expect_error "has 2 hard links" points -s halton -n 16 -o "$tmp/h1.txt"
 # --- format and extension -----------------------------------------------------
 expect_error "invalid format = txt: does not match the output" points -s halton -n 16 -o "$tmp/x.npy" --format txt
 [ ! -e "$tmp/x.npy" ] && ok || fail "a mismatched --format left a file"
+expect_error "invalid format = csv: needs an output name ending in .csv" points -s halton -n 16 --format csv -o "$tmp/p.dat"
 "$stratum" points -s halton -n 16 -o "$tmp/y.npy" && ok || fail "points -o y.npy"
 head -c 6 "$tmp/y.npy" | grep -q NUMPY && ok || fail "-o y.npy without --format is not .npy"
 "$stratum" discrepancy "$tmp/y.npy" --measure cd >"$tmp/out" 2>"$tmp/err" && ok || fail "its own reader refuses y.npy: $(cat "$tmp/err")"
