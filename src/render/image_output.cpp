@@ -63,9 +63,12 @@ void write_image(const Image& image, io::OutputFile& file) {
     const Image back = read_image(file.staging());
     if (back.width != image.width || back.height != image.height) throw std::runtime_error("it reads back at another size");
   } catch (const std::exception& e) {
+    std::string why = e.what();  // the reader's reason, without the staging file's name
+    const auto reason = why.find(": ", why.find(file.staging()));
+    if (why.find(file.staging()) != std::string::npos && reason != std::string::npos) why = why.substr(reason + 2);
     file.discard();
     throw invalid_argument(file.argument(), file.path(),
-                           std::string("could not be written completely (no room on the disk?): ") + e.what());
+                           "could not be written completely (no room on the disk?): it reads back as: " + why);
   }
 }
 
