@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "commands.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/report/report.hpp"
 #include "stratum/util/error.hpp"
 
@@ -26,6 +27,10 @@ void run_report(ReportCliOptions& options) {
       fmt::print("{:<16} {:<4} {}\n", section.id, section.lecture, section.title);
     return;
   }
+  // Its sections write figures as they go, from every process: one process only (docs/distributed.md).
+  require(distributed::size() == 1, "processes", distributed::size(),
+          "report runs as one process (its renders, studies and discrepancies split over MPI ranks when run "
+          "as their own commands)");
   require(options.threads >= 0 && options.threads <= 1024, "threads", options.threads,
           "must be in [0, 1024] (0: every core)");
   options.report.threads = static_cast<unsigned>(options.threads);

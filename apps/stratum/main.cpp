@@ -3,13 +3,18 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <filesystem>
+#include <string>
 #include <system_error>
 
 #include "commands.hpp"
+#include "distributed_session.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
 
 int main(int argc, char** argv) {
+  stratum::cli::DistributedSession session(argc, argv);  // an MPI rank under mpirun/srun
   CLI::App app{"stratum: Monte Carlo and quasi-Monte Carlo sampling toolkit"};
   app.require_subcommand(1);
   stratum::cli::add_samplers_command(app);
@@ -34,26 +39,27 @@ int main(int argc, char** argv) {
   stratum::cli::add_study_dimension_command(*study);
   stratum::cli::add_study_importance_command(*study);
   stratum::io::install_signal_cleanup();  // Ctrl-C or SIGTERM: no staging file is left behind
+  int code = 0;
+  std::string message;
   try {
     app.parse(argc, argv);
     stratum::io::check_stdout();  // output lost on a full disk or a closed stdout is an error
   } catch (const CLI::ConversionError& e) {
-    fmt::print(stderr, "stratum: error: {}: not a valid number for this option (see --help)\n", e.what());
-    return 2;
+    code = 2, message = fmt::format("{}: not a valid number for this option (see --help)", e.what());
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    code = app.exit(e);  // usage errors and --help print themselves (on rank 0)
+  } catch (const stratum::distributed::PeerFailure&) {
+    code = 1;  // another rank failed and says why
   } catch (const stratum::invalid_argument& e) {
-    fmt::print(stderr, "stratum: error: {}\n", e.what());
-    return 2;
+    code = 2, message = e.what();
+  } catch (const std::filesystem::filesystem_error& e) {
+    code = 1, message = e.what();
   } catch (const std::system_error& e) {  // fmt::print to a stdout that lost it (a full disk, a closed stdout)
-    fmt::print(stderr, "stratum: error: stdout: output was lost ({})\n", e.code().message());
-    return 1;
+    code = 1, message = "stdout: output was lost (" + e.code().message() + ")";
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "stratum: error: out of memory\n");
-    return 3;
+    code = 3, message = "out of memory";
   } catch (const std::exception& e) {
-    fmt::print(stderr, "stratum: error: {}\n", e.what());
-    return 1;
+    code = 1, message = e.what();
   }
-  return 0;
+  return session.finish(code, message);
 }

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "stratum/distributed.hpp"
 #include "stratum/estimators/efficiency.hpp"
 #include "stratum/estimators/rqmc.hpp"
 #include "stratum/estimators/running_stats.hpp"
@@ -190,15 +191,19 @@ IntegrationResult integrate(const IntegrationRequest& request) {
     result.standard_error_kind = "iid";
   } else {
     // Independent randomizations, run r seeded with hash64(seed, r): the RQMC replicate estimate.
+    // The runs are a job's items: a distributed job's processes each run their share.
     result.run_estimates.resize(request.runs);
+    const distributed::Share mine = distributed::share(request.runs);
     tbb::task_arena arena(static_cast<int>(request.threads));
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<unsigned>(0, request.runs, 1), [&](const tbb::blocked_range<unsigned>& range) {
-        for (unsigned r = range.begin(); r != range.end(); ++r)
-          result.run_estimates[r] =
-              run_once(*integrand, request.sampler, request.n, hash64(request.seed, r), 1, false).estimate;
-      });
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t r = range.begin(); r != range.end(); ++r)
+                            result.run_estimates[r] = run_once(*integrand, request.sampler, request.n,
+                                                               hash64(request.seed, r), 1, false).estimate;
+                        });
     });
+    distributed::gather_shares(result.run_estimates, request.runs);
     const auto replicates = estimators::rqmc_estimate(result.run_estimates);
     result.estimate = replicates.estimate;
     result.standard_error = replicates.standard_error;
@@ -236,12 +241,15 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   // Every (sampler, N, run) is one task writing its own slot; the reduction
   // below reads the slots in a fixed order, so the numbers do not depend on
   // how TBB schedules the tasks.
+  // The tasks are also a job's items: each process of a distributed job runs
+  // its share, and every process then holds every slot.
   const std::size_t per_sampler = request.counts.size() * request.runs;
   const std::size_t tasks = request.samplers.size() * per_sampler;
-  std::vector<double> estimates(tasks), seconds(tasks);
+  std::vector<double> slots(2 * tasks);  // (estimate, seconds) of each task
+  const distributed::Share mine = distributed::share(tasks);
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks, 1), [&](const tbb::blocked_range<std::size_t>& range) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t task = range.begin(); task != range.end(); ++task) {
         const std::size_t s = task / per_sampler;
         const std::size_t k = (task % per_sampler) / request.runs;
@@ -249,11 +257,14 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
         const std::uint64_t n = request.counts[k];
         const RunOutcome outcome =
             run_once(*integrand, result.samplers[s].sampler, n, hash64(request.seed, s, n, r), 1, false);
-        estimates[task] = outcome.estimate;
-        seconds[task] = outcome.seconds;
+        slots[2 * task] = outcome.estimate;
+        slots[2 * task + 1] = outcome.seconds;
       }
     });
   });
+  distributed::gather_shares(slots, tasks);
+  const auto estimate_of = [&](std::size_t task) { return slots[2 * task]; };
+  const auto seconds_of = [&](std::size_t task) { return slots[2 * task + 1]; };
 
   for (std::size_t s = 0; s < result.samplers.size(); ++s) {
     auto& entry = result.samplers[s];
@@ -263,9 +274,9 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
       double error_sum = 0, squared_error_sum = 0;
       for (std::size_t r = 0; r < request.runs; ++r) {
         const std::size_t task = s * per_sampler + k * request.runs + r;
-        const double error = estimates[task] - result.exact;
-        spread.add(estimates[task]);
-        time.add(seconds[task]);
+        const double error = estimate_of(task) - result.exact;
+        spread.add(estimate_of(task));
+        time.add(seconds_of(task));
         error_sum += error;
         squared_error_sum += error * error;
       }

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "stratum/analysis/integrands.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
@@ -134,8 +135,9 @@ double tensor_product_integral(const PointFunction& f, unsigned d, const Quadrat
   constexpr std::uint64_t block = 4096;
   const std::uint64_t blocks = (n + block - 1) / block;
   std::vector<double> block_sums(blocks);
+  const distributed::Share mine = distributed::share(blocks);  // a distributed job's processes share the blocks
   in_arena(threads, [&] {
-    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, blocks), [&](const tbb::blocked_range<std::uint64_t>& r) {
+    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(mine.begin, mine.end), [&](const tbb::blocked_range<std::uint64_t>& r) {
       std::vector<unsigned> digit(d);
       std::vector<double> x(d);
       for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
@@ -156,6 +158,7 @@ double tensor_product_integral(const PointFunction& f, unsigned d, const Quadrat
       }
     });
   });
+  distributed::gather_shares(block_sums, blocks);
   CompensatedSum total;
   for (double s : block_sums) total.add(s);
   return total.value();
@@ -290,10 +293,12 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
     study.series.push_back(std::move(series));
   }
   // Squared errors per task, stored by index and summed serially below:
-  // the result does not depend on scheduling.
+  // the result does not depend on scheduling, nor on how a distributed job
+  // shares the tasks out.
   std::vector<double> squared_error(tasks.size());
+  const distributed::Share mine = distributed::share(tasks.size());
   in_arena(request.threads, [&] {
-    tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
+    tbb::parallel_for(mine.begin, mine.end, [&](std::size_t t) {
       const Task& task = tasks[t];
       const DimensionSeries& series = study.series[task.series];
       const std::uint64_t n = series.n[task.point];
@@ -303,6 +308,7 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
       squared_error[t] = (estimate - series.exact) * (estimate - series.exact);
     });
   });
+  distributed::gather_shares(squared_error, tasks.size());
   for (std::size_t s = 0; s < study.series.size(); ++s) {
     DimensionSeries& series = study.series[s];
     for (std::size_t i = 0; i < series.m.size(); ++i) {

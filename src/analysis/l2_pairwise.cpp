@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "stratum/analysis/l2_discrepancy.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::analysis {
@@ -65,6 +66,19 @@ struct MixturePair {
 constexpr std::size_t kRowBlock = 32;   // rows per task (fixed: the reduction order never depends on threads)
 constexpr std::size_t kColumnTile = 256;  // partners kept in L1 while the block's rows pass over them
 
+/// The row blocks in the order their sums are kept: 0, B−1, 1, B−2, … A
+/// contiguous run of this order pairs long blocks (few rows above them)
+/// with short ones, so equal shares of it are nearly equal work.
+std::vector<std::size_t> deal_blocks(std::size_t blocks) {
+  std::vector<std::size_t> order;
+  order.reserve(blocks);
+  for (std::size_t low = 0, high = blocks; low < high;) {
+    order.push_back(low++);
+    if (low < high) order.push_back(--high);
+  }
+  return order;
+}
+
 /// Σ_{i in [row_begin, row_end)} Σ_{j > i} Π_k g(x_ik, x_jk), tiled over j.
 template <class Pair>
 [[gnu::always_inline]] inline double upper_pairs(const Columns& cols, std::size_t row_begin, std::size_t row_end) {
@@ -115,26 +129,37 @@ double upper_pairs_dispatch(const Columns& c, std::size_t b, std::size_t e) {
 }
 
 /// Σ_{i,j} Π_k g(x_ik, x_jk) = Σ_i g(x_i, x_i) + 2 Σ_{i<j}, with the row blocks'
-/// sums added in block order (Neumaier's compensated sum).
+/// sums added in block order. The blocks are a job's items: each process of
+/// a distributed job computes its share (stratum/distributed.hpp), so the
+/// sum is the same, bit for bit, on any number of processes.
 template <class Pair>
 long double pair_sum(const Columns& cols, unsigned threads) {
   const std::size_t n = cols.n, blocks = (n + kRowBlock - 1) / kRowBlock;
   std::vector<double> partial(blocks, 0.0);
-  auto run = [&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t b = r.begin(); b < r.end(); ++b)
-        partial[b] = upper_pairs_dispatch<Pair>(cols, b * kRowBlock, std::min(n, (b + 1) * kRowBlock));
-    }, tbb::simple_partitioner());
+  // Block b costs ∝ n − 32b, so the shares are cut from the dealt order
+  // (equal work per process); the sum below still runs in block order.
+  const std::vector<std::size_t> order = deal_blocks(blocks);
+  const distributed::Share mine = distributed::share(blocks);
+  auto block = [&](std::size_t slot) {
+    const std::size_t b = order[slot];
+    partial[slot] = upper_pairs_dispatch<Pair>(cols, b * kRowBlock, std::min(n, (b + 1) * kRowBlock));
   };
   if (threads <= 1) {
-    for (std::size_t b = 0; b < blocks; ++b)
-      partial[b] = upper_pairs_dispatch<Pair>(cols, b * kRowBlock, std::min(n, (b + 1) * kRowBlock));
+    for (std::size_t slot = mine.begin; slot < mine.end; ++slot) block(slot);
   } else {
     tbb::task_arena arena(static_cast<int>(threads));
-    arena.execute(run);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t slot = r.begin(); slot < r.end(); ++slot) block(slot);
+                        }, tbb::simple_partitioner());
+    });
   }
+  distributed::gather_shares(partial, blocks);
+  std::vector<std::size_t> slot_of(blocks);
+  for (std::size_t slot = 0; slot < blocks; ++slot) slot_of[order[slot]] = slot;
   long double upper = 0.0L;
-  for (double v : partial) upper += v;
+  for (std::size_t b = 0; b < blocks; ++b) upper += partial[slot_of[b]];
   long double diagonal = 0.0L;
   for (std::size_t i = 0; i < n; ++i) {
     double product = 1.0;

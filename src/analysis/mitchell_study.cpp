@@ -9,6 +9,7 @@
 #include "edge_discrepancy_detail.hpp"
 #include "stratum/analysis/edge_discrepancy.hpp"
 #include "stratum/analysis/spectrum.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
@@ -133,28 +134,44 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
     for (std::size_t n : options.counts)
       if (n <= 1024) spectrum_count = std::max(spectrum_count, n);
   }
-  // One task per (cell, realization); each writes only its own slot.
-  std::vector<RandomEdgeDiscrepancy> results(study.cells.size() * k);
+  // One task per (cell, realization); each writes only its own slots
+  // (rms, mean, max). A distributed job's processes each run their share.
+  const std::size_t tasks = study.cells.size() * k;
+  std::vector<double> results(3 * tasks);
   std::vector<std::vector<double>> spectrum_points(patterns.size() * k);
-  edge_detail::parallel_ranges(results.size(), options.threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t task = begin; task < end; ++task) {
+  const std::size_t spectrum_column = static_cast<std::size_t>(
+      std::find(options.counts.begin(), options.counts.end(), spectrum_count) - options.counts.begin());
+  const auto realize = [&](std::size_t c, std::size_t r) {
+    return generate_points(patterns[c / counts].sampler,
+                           request_for(patterns[c / counts], study.cells[c].n, hash64(options.seed, r)));
+  };
+  const distributed::Share mine = distributed::share(tasks);
+  edge_detail::parallel_ranges(mine.end - mine.begin, options.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t task = mine.begin + begin; task < mine.begin + end; ++task) {
       const std::size_t c = task / k, r = task % k;
-      const MitchellCell& cell = study.cells[c];
-      const PointSet points =
-          generate_points(patterns[c / counts].sampler, request_for(patterns[c / counts], cell.n, hash64(options.seed, r)));
+      const PointSet points = realize(c, r);
       const PointView view{points.data.get(), points.n, points.d};
-      results[task] = random_edge_discrepancy(view, options.lines, hash64(options.seed, r, 1), 1);
-      if (cell.requested == spectrum_count && (c % counts) == static_cast<std::size_t>(
-              std::find(options.counts.begin(), options.counts.end(), spectrum_count) - options.counts.begin()))
+      const RandomEdgeDiscrepancy d = random_edge_discrepancy(view, options.lines, hash64(options.seed, r, 1), 1);
+      results[3 * task] = d.rms, results[3 * task + 1] = d.mean, results[3 * task + 2] = d.max;
+      if (c % counts == spectrum_column && study.cells[c].requested == spectrum_count)
         spectrum_points[(c / counts) * k + r].assign(points.data.get(), points.data.get() + 2 * points.n);
     }
   });
+  distributed::gather_shares(results, tasks);
+  if (distributed::size() > 1)  // the other processes' spectrum sets: generated again here (cheap beside the lines)
+    for (std::size_t c = spectrum_column; c < study.cells.size(); c += counts)
+      if (study.cells[c].requested == spectrum_count)
+        for (std::size_t r = 0; r < k; ++r)
+          if (spectrum_points[(c / counts) * k + r].empty()) {
+            const PointSet points = realize(c, r);
+            spectrum_points[(c / counts) * k + r].assign(points.data.get(), points.data.get() + 2 * points.n);
+          }
   for (std::size_t c = 0; c < study.cells.size(); ++c) {
     std::vector<double> rms(k), mean(k), max(k);
     for (std::size_t r = 0; r < k; ++r) {
-      rms[r] = results[c * k + r].rms;
-      mean[r] = results[c * k + r].mean;
-      max[r] = results[c * k + r].max;
+      rms[r] = results[3 * (c * k + r)];
+      mean[r] = results[3 * (c * k + r) + 1];
+      max[r] = results[3 * (c * k + r) + 2];
     }
     study.cells[c].rms = mean_and_error(rms);
     study.cells[c].mean = mean_and_error(mean);

@@ -28,10 +28,13 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include "stratum/analysis/star_discrepancy.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::analysis {
 namespace {
+
+[[noreturn]] void too_many_boxes(double delta, std::uint64_t max_boxes);
 
 struct Bounds {
   double lower = 0;
@@ -48,6 +51,12 @@ std::string short_text(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
+}
+
+void too_many_boxes(double delta, std::uint64_t max_boxes) {
+  throw invalid_argument("delta", short_text(delta),
+                         "the delta-partition needs more than max_boxes = " + std::to_string(max_boxes) +
+                             " boxes for these points; give a larger delta or a larger max_boxes");
 }
 
 double volume(const std::vector<double>& corner) {
@@ -87,10 +96,7 @@ struct Partition {
   /// more volume). Both are values of the local discrepancy.
   Bounds finish(const std::vector<double>& alpha, const std::vector<double>& beta,
                 const std::vector<std::uint32_t>& inside) const {
-    if (boxes_so_far.fetch_add(1, std::memory_order_relaxed) + 1 > max_boxes)
-      throw invalid_argument("delta", short_text(delta),
-                             "the delta-partition needs more than max_boxes = " + std::to_string(max_boxes) +
-                                 " boxes for these points; give a larger delta or a larger max_boxes");
+    if (boxes_so_far.fetch_add(1, std::memory_order_relaxed) + 1 > max_boxes) too_many_boxes(delta, max_boxes);
     const std::size_t d = points.d;
     std::vector<double> alpha_max(d, 0.0), beta_max(d, 0.0);
     std::size_t count_alpha = 0;
@@ -205,13 +211,25 @@ StarDiscrepancyBounds star_discrepancy_bounds(const PointView& points, double de
     for (const auto& box : frontier) result.merge(partition.split(box, next));
     frontier = std::move(next);
   }
+  // The subtrees are a job's items: a distributed job's processes each
+  // finish their share; (lower, upper, boxes) per subtree are gathered.
   std::vector<Bounds> parts(frontier.size());
+  const distributed::Share mine = distributed::share(frontier.size());
   oneapi::tbb::task_arena arena(static_cast<int>(std::max(1u, threads)));
   arena.execute([&] {
-    oneapi::tbb::parallel_for(std::size_t{0}, frontier.size(),
-                              [&](std::size_t i) { parts[i] = partition.run(std::move(frontier[i])); });
+    oneapi::tbb::parallel_for(mine.begin, mine.end, [&](std::size_t i) { parts[i] = partition.run(std::move(frontier[i])); });
   });
+  if (distributed::size() > 1) {
+    std::vector<double> packed(3 * parts.size());
+    for (std::size_t i = mine.begin; i < mine.end; ++i)
+      packed[3 * i] = parts[i].lower, packed[3 * i + 1] = parts[i].upper, packed[3 * i + 2] = double(parts[i].boxes);
+    distributed::gather_shares(packed, parts.size());
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      parts[i] = {packed[3 * i], packed[3 * i + 1], static_cast<std::uint64_t>(packed[3 * i + 2])};
+  }
   for (const auto& part : parts) result.merge(part);
+  // Each process counted only its own boxes: the budget holds for the job.
+  if (result.boxes > max_boxes) too_many_boxes(delta, max_boxes);
   return {result.lower, result.upper, result.boxes};
 }
 

@@ -14,6 +14,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::io {
@@ -170,6 +171,10 @@ void OutputFile::fail(const std::string& why) const { throw invalid_argument(arg
 void OutputFile::prepare() {
   if (prepared_) return;
   if (path_.empty()) fail("must be a file name");
+  if (!distributed::is_root()) {  // a distributed job writes once, from rank 0
+    inactive_ = prepared_ = true;
+    return;
+  }
   // A FIFO or device is opened by the name given (/dev/stdout's link chain
   // ends in /proc); a regular file or a new one is the end of the link chain.
   struct stat info {};
@@ -228,6 +233,7 @@ const std::string& OutputFile::staging() const {
 
 void OutputFile::write(const std::function<void(std::ostream&)>& body) {
   prepare();
+  if (inactive_) return;
   const int fd = ::open(staging_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
   if (fd < 0) fail("cannot be written (" + os_error(errno) + ")");
   int error = write_through(fd, body);
@@ -240,6 +246,7 @@ void OutputFile::write(const std::function<void(std::ostream&)>& body) {
 }
 
 void OutputFile::check_staged() {
+  if (inactive_) return;
   const int fd = ::open(staging().c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) fail("could not be written (" + os_error(errno) + ")");
   struct stat info {};
@@ -258,7 +265,7 @@ void OutputFile::check_staged() {
 }
 
 void OutputFile::commit() {
-  if (committed_) return;
+  if (committed_ || inactive_) return;
   if (!prepared_) throw std::logic_error("OutputFile::commit before prepare: " + path_);
   if (!special_) {
     if (::rename(staging_.c_str(), target_.c_str()) != 0) fail("cannot be replaced (" + os_error(errno) + ")");
@@ -332,6 +339,7 @@ void OutputGroup::prepare() {
   try {
     for (std::size_t i = 0; i < files_.size(); ++i) {
       files_[i]->prepare();
+      if (files_[i]->inactive_) continue;  // another rank's outputs: rank 0 checks them
       for (std::size_t j = 0; j < i; ++j) {
         const OutputFile &a = *files_[j], &b = *files_[i];
         const bool same_inode = (a.existed_ || a.special_) && (b.existed_ || b.special_) && a.device_ == b.device_ &&
@@ -401,12 +409,14 @@ void install_signal_cleanup() {
 }
 
 void write_stdout(const std::function<void(std::ostream&)>& body) {
+  if (!distributed::is_root()) return;  // rank 0 alone prints (the others' stdout is a sink)
   check_stdout();  // what went before, in order
   const int error = write_through(STDOUT_FILENO, body);
   if (error) throw std::runtime_error("stdout: output was lost (" + os_error(error) + ")");
 }
 
 void check_stdout() {
+  if (!distributed::is_root()) return;  // rank 0 alone prints (the others' stdout is a sink)
   errno = 0;
   std::cout.flush();
   int error = errno;

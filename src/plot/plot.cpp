@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "stratum/distributed.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/plot_scripts.hpp"
 #include "stratum/util/error.hpp"
@@ -177,7 +178,7 @@ void write_plot(std::string_view script, const nlohmann::json& data, io::OutputF
 
 void write_plots(const std::vector<PlotJob>& jobs, unsigned processes) {
   namespace fs = std::filesystem;
-  if (jobs.empty()) return;
+  if (jobs.empty() || !distributed::is_root()) return;  // a distributed job draws once, on rank 0
   std::vector<std::unique_ptr<StagedJob>> staged;
   for (const auto& job : jobs) staged.push_back(stage(job));
   processes = std::max(1u, std::min<unsigned>(processes, static_cast<unsigned>(jobs.size())));

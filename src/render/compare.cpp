@@ -10,6 +10,7 @@
 #include <map>
 
 #include "image_plugin.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/io/json.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
@@ -280,13 +281,16 @@ Image load_cached_reference(const std::string& path, std::uint32_t spp, std::str
 Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
                       const std::string& cache_dir, bool* cached, std::string* warning) {
   const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
-  if (std::filesystem::exists(path) || std::filesystem::exists(metadata_sibling(path))) {
-    std::string why;
-    Image image = load_cached_reference(path, spp, why);
-    if (why.empty()) {
-      if (cached) *cached = true;
-      return image;
-    }
+  const bool there = std::filesystem::exists(path) || std::filesystem::exists(metadata_sibling(path));
+  std::string why = "not cached";
+  Image loaded = there ? load_cached_reference(path, spp, why) : Image{};
+  // Used only if every process of a distributed job has a sound entry (their
+  // caches need not be shared): otherwise they render it together.
+  if (!distributed::any(!why.empty())) {
+    if (cached) *cached = true;
+    return loaded;
+  }
+  if (there && !why.empty()) {
     const std::string message = "the cached reference " + path + " is not sound (" + why + "): rendering it again";
     if (warning) *warning = message;
     else std::fprintf(stderr, "stratum: warning: %s\n", message.c_str());
@@ -303,8 +307,13 @@ Image reference_image(const Scene& scene, const std::string& scene_key, const Re
   io::OutputFile* meta = entry.add("cache", metadata_sibling(path));
   entry.prepare();
   Image image = render(scene, reference_settings(settings, spp));
+  // Rounded to what the cache stores (32-bit floats), so a measurement
+  // against a fresh reference equals one against its cached copy.
+  for (double& v : image.rgb) v = static_cast<float>(v);
+  for (double& v : image.variance) v = static_cast<float>(v);
   write_variance_image(image, *variance);
   write_image(image, *picture);
+  if (!meta->active()) return image;  // written by rank 0 of a distributed job
   const nlohmann::json metadata = {{"format", "stratum-reference-1"},
                                    {"width", image.width},
                                    {"height", image.height},

@@ -39,6 +39,7 @@ void write_image(const Image& image, io::OutputFile& file) {
   const std::string extension = lowercase_extension(file.path());
   check_image_path(file.argument(), file.path());
   file.prepare();
+  if (!file.active()) return;  // a distributed job writes once, from rank 0
   const bool linear = extension == ".exr" || extension == ".hdr";
   std::vector<float> floats;
   std::vector<unsigned char> bytes;

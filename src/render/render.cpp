@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 
+#include "stratum/distributed.hpp"
 #include "stratum/render/accelerator.hpp"
 #include "stratum/render/camera_model.hpp"
 #include "stratum/render/integrators.hpp"
@@ -62,10 +63,15 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
   constexpr int tile = 16;
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, settings.threads);
+  // Rows of tiles are a job's items: each process of a distributed job
+  // renders its share (every pixel is a pure function of its samples) and
+  // the rows are gathered after the last pass.
+  const distributed::Share rows = distributed::share(std::size_t(tiles_y));
+  const int first_tile = int(rows.begin) * tiles_x, last_tile = int(rows.end) * tiles_x;
   std::uint32_t taken = 0;
   for (std::uint32_t pass = 0; pass < passes; ++pass) {
     const std::uint32_t first = std::uint64_t(spp) * pass / passes, last = std::uint64_t(spp) * (pass + 1) / passes;
-    tbb::parallel_for(0, tiles_x * tiles_y, [&](int t) {
+    tbb::parallel_for(first_tile, last_tile, [&](int t) {
       PixelSampler sampler(prototype);  // per tile: its own per-pixel cache
       const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
       for (int y = y0; y < std::min(y0 + tile, height); ++y)
@@ -95,8 +101,12 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
     taken = last;
     if (progress) progress(pass + 1, passes, elapsed());
     const bool out_of_time = settings.time_limit > 0 && elapsed() >= settings.time_limit;
-    if (out_of_time || (stop && stop->load())) break;
+    if (distributed::any(out_of_time || (stop && stop->load()))) break;  // every process stops after the same pass
   }
+  // Tile row r holds pixel rows [16r, min(16r + 16, height)): 3 sums each per pixel.
+  const auto row_offset = [&](std::size_t r) { return 3 * std::size_t(width) * std::min<std::size_t>(tile * r, height); };
+  distributed::gather_shares({sum.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
+  distributed::gather_shares({sum2.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
 
   Image image;
   image.width = width;

@@ -18,6 +18,8 @@
 ///   refused.
 /// Staging files are removed on SIGINT/SIGTERM (install_signal_cleanup) and
 /// those of dead processes at the next prepare() in the same folder.
+/// In a distributed job (docs/distributed.md) only rank 0 writes: on the
+/// other ranks an output is inactive (prepare, write and commit do nothing).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -58,6 +60,8 @@ class OutputFile {
   /// The file written after symbolic links are followed (valid after prepare()).
   const std::filesystem::path& target() const { return target_; }
   bool committed() const { return committed_; }
+  /// False on the ranks of a distributed job other than 0: nothing is written.
+  bool active() const { return !inactive_; }
   bool special() const { return special_; }
 
  private:
@@ -65,7 +69,7 @@ class OutputFile {
   std::string argument_, path_;
   std::filesystem::path target_;
   std::string staging_;
-  bool prepared_ = false, special_ = false, existed_ = false, committed_ = false;
+  bool prepared_ = false, special_ = false, existed_ = false, committed_ = false, inactive_ = false;
   unsigned mode_ = 0, owner_ = 0, group_ = 0;  // of the file replaced (existed_)
   std::uint64_t device_ = 0, inode_ = 0;
   int slot_ = -1;  // in the registry of staging files removed on a signal

@@ -1,0 +1,112 @@
+#pragma once
+/// Work split over the processes of one job (MPI ranks, or this process
+/// alone). Every result of stratum is a pure function of (seed, index,
+/// dimension), so a job's independent items (runs, row blocks, tile rows)
+/// can be computed anywhere: each process computes its contiguous share and
+/// the shares are gathered in rank order, after which every process holds
+/// the same array the one-process run fills, and reduces it in the same
+/// fixed order. The result is therefore identical, bit for bit, to one
+/// process for any number of processes (docs/distributed.md).
+///
+/// Without a group installed (the library, Python, a plain `stratum` run)
+/// this process is rank 0 of 1 and every function here is trivial.
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+namespace stratum::distributed {
+
+/// Items [begin, end) of a job's list.
+struct Share {
+  std::size_t begin = 0, end = 0;
+};
+
+/// The processes of a job: the MPI implementation lives with the CLI
+/// (apps/stratum/mpi_session.cpp), so the libraries need no MPI.
+class Group {
+ public:
+  virtual ~Group() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  /// Every process has filled `segments[rank()]` of `data`; afterwards every
+  /// process holds every segment.
+  virtual void gather(double* data, const std::vector<Share>& segments) = 0;
+  /// Whether `flag` is true on any process (the same answer on all).
+  virtual bool any(bool flag) = 0;
+};
+
+/// Thrown on the other processes when one process of the job failed: that
+/// process reports its own error, these leave quietly with a non-zero code.
+class PeerFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+namespace detail {
+/// The installed group (nullptr: this process alone); one per program.
+inline std::atomic<Group*> installed_group{nullptr};
+}  // namespace detail
+
+/// Installs the job's group (nullptr: this process alone). Not owned.
+inline void set_group(Group* group) { detail::installed_group.store(group); }
+
+inline int rank() {
+  const Group* group = detail::installed_group.load();
+  return group ? group->rank() : 0;
+}
+
+inline int size() {
+  const Group* group = detail::installed_group.load();
+  return group ? group->size() : 1;
+}
+
+/// Rank 0: the process that writes the job's output (the writers of io,
+/// render, plot and report do nothing on the other ranks).
+inline bool is_root() { return rank() == 0; }
+
+/// The contiguous share of `count` items that `rank` computes:
+/// [⌊count·rank/size⌋, ⌊count·(rank+1)/size⌋), empty when count < size.
+inline Share share_of(std::size_t count, int rank) {
+  const auto processes = static_cast<unsigned __int128>(size());
+  const auto r = static_cast<unsigned __int128>(rank);
+  return {static_cast<std::size_t>(count * r / processes), static_cast<std::size_t>(count * (r + 1) / processes)};
+}
+
+/// This process's share.
+inline Share share(std::size_t count) { return share_of(count, rank()); }
+
+/// After this process filled its share of `count` items in `data`, item i
+/// occupying [offset(i), offset(i + 1)) (offset(count) = data.size()),
+/// fills in the other processes' shares.
+inline void gather_shares(std::span<double> data, std::size_t count,
+                          const std::function<std::size_t(std::size_t)>& offset) {
+  Group* group = detail::installed_group.load();
+  if (!group || group->size() == 1) return;
+  if (offset(count) != data.size()) throw std::logic_error("gather_shares: the items do not cover the data");
+  std::vector<Share> segments(static_cast<std::size_t>(group->size()));
+  for (int r = 0; r < group->size(); ++r) {
+    const Share items = share_of(count, r);
+    segments[static_cast<std::size_t>(r)] = {offset(items.begin), offset(items.end)};
+  }
+  group->gather(data.data(), segments);
+}
+
+/// The same for items of equal width (data.size() / count values each).
+inline void gather_shares(std::span<double> data, std::size_t count) {
+  if (count == 0) return;
+  if (data.size() % count != 0) throw std::logic_error("gather_shares: items of unequal width");
+  const std::size_t width = data.size() / count;
+  gather_shares(data, count, [width](std::size_t i) { return i * width; });
+}
+
+/// Whether `flag` is true on any process: a decision every process must
+/// take alike (stop after this pass?) from values that may differ.
+inline bool any(bool flag) {
+  Group* group = detail::installed_group.load();
+  return group ? group->any(flag) : flag;
+}
+
+}  // namespace stratum::distributed

@@ -1,0 +1,79 @@
+// The share arithmetic of stratum/distributed.hpp, and its one-process
+// behaviour (the MPI runs themselves: tests/apps/mpi_runs.sh).
+#include "stratum/distributed.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace {
+
+/// A group of `size` processes seen from `rank`, recording what it is asked to gather.
+class RecordingGroup final : public stratum::distributed::Group {
+ public:
+  RecordingGroup(int rank, int size) : rank_(rank), size_(size) {}
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  void gather(double*, const std::vector<stratum::distributed::Share>& segments) override { gathered = segments; }
+  bool any(bool flag) override { return flag; }
+  std::vector<stratum::distributed::Share> gathered;
+
+ private:
+  int rank_, size_;
+};
+
+struct Installed {
+  explicit Installed(stratum::distributed::Group* group) { stratum::distributed::set_group(group); }
+  ~Installed() { stratum::distributed::set_group(nullptr); }
+};
+
+TEST(Distributed, AloneEveryShareIsEverything) {
+  EXPECT_EQ(stratum::distributed::rank(), 0);
+  EXPECT_EQ(stratum::distributed::size(), 1);
+  EXPECT_TRUE(stratum::distributed::is_root());
+  const auto share = stratum::distributed::share(17);
+  EXPECT_EQ(share.begin, 0u);
+  EXPECT_EQ(share.end, 17u);
+}
+
+TEST(Distributed, SharesAreContiguousDisjointAndCoverEveryItem) {
+  for (int size : {1, 2, 3, 7, 64}) {
+    RecordingGroup group(0, size);
+    Installed installed(&group);
+    for (std::size_t count : {0u, 1u, 2u, 5u, 63u, 64u, 65u, 1000u}) {
+      std::size_t next = 0, largest = 0, smallest = count;
+      for (int r = 0; r < size; ++r) {
+        const auto share = stratum::distributed::share_of(count, r);
+        EXPECT_EQ(share.begin, next) << "count " << count << " size " << size << " rank " << r;
+        EXPECT_LE(share.begin, share.end);
+        largest = std::max(largest, share.end - share.begin);
+        smallest = std::min(smallest, share.end - share.begin);
+        next = share.end;
+      }
+      EXPECT_EQ(next, count) << "count " << count << " size " << size;
+      EXPECT_LE(largest - smallest, 1u) << "shares differ by more than one item";
+    }
+  }
+}
+
+TEST(Distributed, GatherAsksForEachRanksSegmentOfVariableWidthItems) {
+  RecordingGroup group(1, 3);
+  Installed installed(&group);
+  // Items 0..4 of widths 1, 2, 3, 4, 5: offsets 0, 1, 3, 6, 10, 15.
+  const std::vector<std::size_t> offsets = {0, 1, 3, 6, 10, 15};
+  std::vector<double> data(15);
+  stratum::distributed::gather_shares(data, 5, [&](std::size_t i) { return offsets[i]; });
+  ASSERT_EQ(group.gathered.size(), 3u);
+  // shares of 5 items on 3 ranks: [0,1), [1,3), [3,5)
+  EXPECT_EQ(group.gathered[0].begin, 0u);
+  EXPECT_EQ(group.gathered[0].end, 1u);
+  EXPECT_EQ(group.gathered[1].begin, 1u);
+  EXPECT_EQ(group.gathered[1].end, 6u);
+  EXPECT_EQ(group.gathered[2].begin, 6u);
+  EXPECT_EQ(group.gathered[2].end, 15u);
+  EXPECT_THROW(stratum::distributed::gather_shares(data, 4, [&](std::size_t i) { return offsets[i]; }),
+               std::logic_error);
+}
+
+}  // namespace
