@@ -4,11 +4,14 @@
 #ifdef STRATUM_HAS_RENDER
 #include <fmt/core.h>
 
+#include <cmath>
+
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/json.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
@@ -54,17 +57,25 @@ void run_compare(CompareCommand& o) {
                      {"relative_mse", r.relative_mse}, {"seconds", r.seconds}, {"efficiency", r.efficiency},
                      {"mse_ratio", r.mse_ratio}, {"efficiency_ratio", r.efficiency_ratio}});
       if (!r.variance_path.empty()) out.back()["variance"] = r.variance_path;
+      // The error's spectrum (docs/render.md): null where there is none (tiny or perfect images).
+      auto& row = out.back();
+      row["low_frequency_power"] = std::isfinite(r.low_frequency_power) ? nlohmann::json(r.low_frequency_power) : nullptr;
+      nlohmann::json power = nlohmann::json::array();
+      for (double p : r.error_radial_power) power.push_back(std::isfinite(p) ? nlohmann::json(p) : nullptr);
+      row["error_spectrum"] = {{"frequency", r.error_radial_frequency}, {"power", power}};
     }
     std::cout << nlohmann::json{{"scene", scene.name}, {"reference_spp", o.reference_spp}, {"equal_time", o.run.equal_time},
                                 {"rows", out}}.dump(2)
               << "\n";
     return;
   }
-  fmt::print("{:18} {:>7} {:>11} {:>11} {:>9} {:>11} {:>9} {:>9}\n", "config", "spp", "MSE", "relMSE", "seconds",
-             "efficiency", "MSE x", "eff. x");
+  fmt::print("{:18} {:>7} {:>11} {:>11} {:>9} {:>11} {:>9} {:>9} {:>8}\n", "config", "spp", "MSE", "relMSE", "seconds",
+             "efficiency", "MSE x", "eff. x", "low-f");
   for (const auto& r : rows)
-    fmt::print("{:18} {:>7} {:>11.4e} {:>11.4e} {:>9.3f} {:>11.4e} {:>9.2f} {:>9.2f}\n", r.label, r.samples, r.mse,
-               r.relative_mse, r.seconds, r.efficiency, r.mse_ratio, r.efficiency_ratio);
+    fmt::print("{:18} {:>7} {:>11.4e} {:>11.4e} {:>9.3f} {:>11.4e} {:>9.2f} {:>9.2f} {:>8}\n", r.label, r.samples, r.mse,
+               r.relative_mse, r.seconds, r.efficiency, r.mse_ratio, r.efficiency_ratio,
+               std::isfinite(r.low_frequency_power) ? fmt::format("{:.3f}", r.low_frequency_power) : std::string("-"));
+  fmt::print("(low-f: the error's power below a quarter of Nyquist, white noise = 1, blue noise < 1)\n");
   fmt::print("({}; ratios against the first row; efficiency = 1 / (MSE x seconds); reference: {} spp, cached in {})\n",
              o.run.equal_time > 0 ? fmt::format("equal time: {} s each", o.run.equal_time) : std::string("equal samples"),
              o.reference_spp, o.run.cache_dir);
@@ -87,8 +98,8 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--variance-dir", o->run.variance_dir, "write each configuration's variance image there (EXR)");
   command->add_option("--width", o->width, "image width")->capture_default_str();
   command->add_option("--height", o->height, "image height")->capture_default_str();
-  command->add_option("--threads", o->threads, "threads")->capture_default_str();
-  command->add_option("--seed", o->seed, "seed of the configurations")->capture_default_str();
+  add_threads_option(*command, o->threads, "threads");
+  add_seed_option(*command, o->seed, "seed of the configurations");
   command->add_flag("--json", o->json, "JSON output");
   command->callback([o] { run_compare(*o); });
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/convergence.hpp"
@@ -23,7 +24,8 @@ struct ConvergeOptions {
   std::optional<std::int64_t> d;
   std::uint64_t seed = 0;
   std::int64_t runs = 32, threads = 1;
-  std::vector<std::string> params;
+  std::vector<std::string> integrand_params, params;  ///< --integrand-param; -p (every sampler's)
+  std::string randomize;                              ///< --randomize (every sampler's)
   bool json = false;
 };
 
@@ -47,26 +49,21 @@ nlohmann::json to_json(const sa::ConvergenceResult& result) {
 
 void run_converge(const ConvergeOptions& o) {
   const auto figure = plot::prepare_plot("plot", o.plot);  // checked before the work
-  require(!o.samplers.empty(), "samplers", "(missing)", "give --samplers A,B,... (each NAME or NAME:RANDOMIZER)");
+  require(!o.samplers.empty(), "samplers", "(missing)",
+          "give --samplers A,B,... (each a spec NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md)");
   require(!o.d || (*o.d >= 1 && *o.d <= std::numeric_limits<unsigned>::max()), "d", o.d.value_or(0),
           "must be a positive integer");
   require(o.runs >= 2 && o.runs <= 1000000, "runs", o.runs, "must be in [2, 1000000] (a variance needs 2 runs)");
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   sa::ConvergenceRequest request;
   request.integrand.name = o.integrand;
   request.integrand.d = static_cast<unsigned>(o.d.value_or(0));
-  for (const auto& item : o.params) {
-    const auto equals = item.find('=');
-    if (equals == std::string::npos || equals == 0) throw invalid_argument("param", item, "must be written key=value");
-    request.integrand.params[item.substr(0, equals)] =
-        sa::parse_integrand_param(item.substr(0, equals), item.substr(equals + 1));
+  for (const auto& item : o.integrand_params) {
+    const auto [key, value] = parse_key_value("integrand-param", item);
+    request.integrand.params[key] = sa::parse_integrand_param(key, value);
   }
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = o.samplers.find(',', start);
-    request.samplers.push_back(sa::parse_sampler_choice(o.samplers.substr(start, comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+  for (const auto& item : split_sampler_list(o.samplers)) {
+    const SamplerSpec spec = combine_sampler_options(item, o.params, o.randomize);
+    request.samplers.push_back({spec.name, spec.randomize, spec.params});
   }
   request.counts = sa::parse_counts(o.counts);
   request.runs = static_cast<unsigned>(o.runs);
@@ -94,15 +91,20 @@ void add_converge_command(CLI::App& app) {
   auto o = std::make_shared<ConvergeOptions>();
   auto* command = app.add_subcommand("converge", "Convergence study: error and variance vs N for several samplers");
   command->add_option("--integrand", o->integrand, "integrand name (see `stratum integrate --list`)")->required();
-  command->add_option("--samplers", o->samplers, "samplers A,B,... each NAME or NAME:RANDOMIZER")->required();
+  command->add_option("--samplers", o->samplers,
+                      "sampler specs A,B,... each NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md); the list "
+                      "splits on commas outside parentheses")
+      ->required();
   command->add_option("--n", o->counts, "A:B (powers of two), A:B:F (times F) or a comma list")
       ->capture_default_str();
   command->add_option("-d", o->d, "dimension (default: the integrand's)");
   command->add_option("--runs", o->runs, "independent randomizations per N")->capture_default_str();
-  command->add_option("--seed", o->seed, "seed; run r of sampler s at N uses hash(seed, s, N, r)")
-      ->capture_default_str();
-  command->add_option("--threads", o->threads, "threads (results do not depend on it)")->capture_default_str();
-  command->add_option("-p,--param", o->params, "integrand parameter key=v1,v2,... (repeatable)");
+  add_seed_option(*command, o->seed, "seed; run r of sampler s at N uses hash(seed, s, N, r)");
+  add_threads_option(*command, o->threads, "threads (results do not depend on it)");
+  command->add_option("-p,--param", o->params, "sampler parameter KEY=VALUE for every sampler of --samplers (repeatable)");
+  command->add_option("--randomize", o->randomize, "randomizer for every sampler of --samplers (or give NAME:RANDOMIZER)");
+  command->add_option("--integrand-param", o->integrand_params, "integrand parameter KEY=V1,V2,... (repeatable)");
+  add_spec_footer(*command);
   command->add_flag("--json", o->json, "print JSON");
   command->add_option("--plot", o->plot, "write a log-log figure of variance vs N (PNG)");
   command->callback([o] { run_converge(*o); });

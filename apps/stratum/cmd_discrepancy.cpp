@@ -17,7 +17,7 @@ namespace sa = stratum::analysis;
 
 struct DiscrepancyOptions : PointInput {
   std::string measure;
-  std::vector<std::string> params;
+  std::vector<std::string> measure_params;
   bool json = false;
 };
 
@@ -38,12 +38,10 @@ std::string result_text(const std::string& name, const sa::MeasureResult& r) {
 }
 
 void run_discrepancy(const DiscrepancyOptions& o) {
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   std::map<std::string, std::string> params;
-  for (const auto& item : o.params) {
-    const auto equals = item.find('=');
-    if (equals == std::string::npos || equals == 0) throw invalid_argument("param", item, "must be written key=value");
-    params[item.substr(0, equals)] = item.substr(equals + 1);
+  for (const auto& item : o.measure_params) {
+    auto [key, value] = parse_key_value("measure-param", item);
+    params[key] = value;
   }
   if (o.measure != "all") sa::find_measure(o.measure);  // an unknown name fails before any work
   const PointSet points = load_points(o);
@@ -55,11 +53,12 @@ void run_discrepancy(const DiscrepancyOptions& o) {
   if (o.measure != "all") {
     results.emplace_back(o.measure, sa::compute_measure(o.measure, view, {params, static_cast<unsigned>(o.threads)}));
   } else {
-    for (const auto& [key, value] : params) {  // every -p must belong to some measure
+    for (const auto& [key, value] : params) {  // every --measure-param must belong to some measure
       bool used = false;
       for (const auto& m : sa::measures())
         for (const auto& spec : m.params) used = used || spec.name == key;
-      if (!used) throw invalid_argument("param", key, "no measure takes it (see `stratum discrepancy --help`)");
+      if (!used)
+        throw invalid_argument("measure-param", key, "no measure takes it (see `stratum discrepancy --help`)");
     }
     for (const auto& m : sa::measures()) {
       if (view.d < m.min_dim || (m.max_dim != 0 && view.d > m.max_dim)) continue;  // not defined for this d
@@ -93,7 +92,7 @@ std::string measure_help() {
   for (const auto& m : sa::measures()) {
     text += fmt::format("\n  {:<16} {}", m.name, m.description);
     for (const auto& p : m.params)
-      text += fmt::format("\n  {:<18} -p {}=… {}{}", "", p.name, p.description,
+      text += fmt::format("\n  {:<18} --measure-param {}=… {}{}", "", p.name, p.description,
                           p.default_value.empty() ? "" : " (default " + p.default_value + ")");
   }
   return text;
@@ -105,8 +104,8 @@ void add_discrepancy_command(CLI::App& app) {
   auto* command = app.add_subcommand("discrepancy", "Measure a point set: discrepancies, stratification, geometry");
   add_point_input_options(*command, *o);
   command->add_option("-m,--measure", o->measure, measure_help())->required();
-  command->add_option("-p,--param", o->params, "measure parameter key=value (repeatable)");
-  command->add_option("--threads", o->threads, "threads (results do not depend on it)")->capture_default_str();
+  command->add_option("--measure-param", o->measure_params, "measure parameter KEY=VALUE (repeatable)");
+  add_threads_option(*command, o->threads, "threads (results do not depend on it)");
   command->add_flag("--json", o->json, "print JSON");
   command->callback([o] { run_discrepancy(*o); });
 }

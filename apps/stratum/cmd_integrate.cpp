@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/util/error.hpp"
 
@@ -17,11 +18,11 @@ namespace {
 namespace sa = stratum::analysis;
 
 struct IntegrateOptions {
-  std::string integrand, sampler = "random", randomize;
+  std::string integrand;
+  SamplerOptions sampler{"random"};
   std::optional<std::int64_t> n, d;
-  std::uint64_t seed = 0;
   std::int64_t runs = 1, threads = 1;
-  std::vector<std::string> params;
+  std::vector<std::string> integrand_params;
   bool json = false, list = false;
 };
 
@@ -44,14 +45,12 @@ void print_integrands(bool json) {
   if (json) fmt::print("{}\n", nlohmann::json{{"integrands", out}}.dump(2));
 }
 
-/// -p key=v1,v2 items into integrand parameters.
-sa::IntegrandParams parse_params(const std::vector<std::string>& items) {
+/// --integrand-param key=v1,v2 items into integrand parameters.
+sa::IntegrandParams parse_integrand_params(const std::vector<std::string>& items) {
   sa::IntegrandParams params;
   for (const auto& item : items) {
-    const auto equals = item.find('=');
-    if (equals == std::string::npos || equals == 0) throw invalid_argument("param", item, "must be written key=value");
-    const std::string key = item.substr(0, equals);
-    params[key] = sa::parse_integrand_param(key, item.substr(equals + 1));
+    const auto [key, value] = parse_key_value("integrand-param", item);
+    params[key] = sa::parse_integrand_param(key, value);
   }
   return params;
 }
@@ -64,23 +63,18 @@ void run_integrate(const IntegrateOptions& o) {
   require(!o.d || (*o.d >= 1 && *o.d <= std::numeric_limits<unsigned>::max()), "d", o.d.value_or(0),
           "must be a positive integer");
   require(o.runs >= 1 && o.runs <= 1000000, "runs", o.runs, "must be in [1, 1000000]");
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   sa::IntegrationRequest request;
-  request.integrand = {o.integrand, static_cast<unsigned>(o.d.value_or(0)), parse_params(o.params)};
-  request.sampler = sa::parse_sampler_choice(o.sampler);
-  if (!o.randomize.empty()) {
-    if (!request.sampler.randomize.empty() && request.sampler.randomize != o.randomize)
-      throw invalid_argument("randomize", o.randomize, "conflicts with --sampler " + o.sampler);
-    request.sampler.randomize = o.randomize;
-  }
+  request.integrand = {o.integrand, static_cast<unsigned>(o.d.value_or(0)), parse_integrand_params(o.integrand_params)};
+  const SamplerSpec spec = o.sampler.spec();
+  request.sampler = {spec.name, spec.randomize, spec.params};
   request.n = static_cast<std::uint64_t>(*o.n);
   request.runs = static_cast<unsigned>(o.runs);
-  request.seed = o.seed;
+  request.seed = o.sampler.seed;
   request.threads = static_cast<unsigned>(o.threads);
   const sa::IntegrationResult r = sa::integrate(request);
   if (o.json) {
     const nlohmann::json out = {{"integrand", r.integrand}, {"sampler", r.sampler}, {"randomize", r.randomize},
-                                {"d", r.d}, {"n", r.n}, {"runs", r.runs}, {"seed", o.seed},
+                                {"d", r.d}, {"n", r.n}, {"runs", r.runs}, {"seed", o.sampler.seed},
                                 {"estimate", r.estimate}, {"standard_error", r.standard_error},
                                 {"standard_error_kind", r.standard_error_kind}, {"exact", r.exact},
                                 {"error", r.error}, {"seconds", r.seconds}, {"run_estimates", r.run_estimates}};
@@ -100,15 +94,14 @@ void add_integrate_command(CLI::App& app) {
   auto o = std::make_shared<IntegrateOptions>();
   auto* command = app.add_subcommand("integrate", "Estimate a test integrand with a sampler (--list: integrands)");
   command->add_option("--integrand", o->integrand, "integrand name (see --list)");
-  command->add_option("-s,--sampler", o->sampler, "sampler name, optionally NAME:RANDOMIZER")->capture_default_str();
+  add_sampler_options(*command, o->sampler, "the sampler", "seed (runs > 1: run r uses hash(seed, r))")
+      ->capture_default_str();
   command->add_option("-n", o->n, "points per run");
   command->add_option("-d", o->d, "dimension (default: the integrand's)");
-  command->add_option("--seed", o->seed, "seed (runs > 1: run r uses hash(seed, r))")->capture_default_str();
-  command->add_option("--randomize", o->randomize, "randomizer (default: the sampler's own)");
   command->add_option("--runs", o->runs, "independent randomizations (>= 2: replicate standard error)")
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "threads")->capture_default_str();
-  command->add_option("-p,--param", o->params, "integrand parameter key=v1,v2,... (repeatable)");
+  add_threads_option(*command, o->threads, "threads");
+  command->add_option("--integrand-param", o->integrand_params, "integrand parameter KEY=V1,V2,... (repeatable)");
   command->add_flag("--json", o->json, "print JSON");
   command->add_flag("--list", o->list, "list the integrands and exit");
   command->callback([o] { run_integrate(*o); });

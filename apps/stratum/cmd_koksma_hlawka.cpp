@@ -46,7 +46,6 @@ void print_functions(bool json) {
 }
 
 void run_koksma_hlawka(const KoksmaHlawkaOptions& o) {
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   if (o.list) {
     const std::string extra = !o.file.empty()      ? o.file
                               : !o.sampler.empty() ? "--sampler " + o.sampler
@@ -100,7 +99,7 @@ void add_koksma_hlawka_command(CLI::App& app) {
   command->add_option("--star", o->star,
                       "use this D* (or an upper bound on it) instead of computing it (exact for N <= 2^18, else "
                       "Thiemard's upper bound)");
-  command->add_option("--threads", o->threads, "threads for D* (results do not depend on it)")->capture_default_str();
+  add_threads_option(*command, o->threads, "threads for D* (results do not depend on it)");
   command->add_flag("--list", o->list, "print the test functions (formula, integral, V_HK, its derivation) only");
   command->add_flag("--json", o->json, "print JSON");
   command->callback([o] { run_koksma_hlawka(*o); });

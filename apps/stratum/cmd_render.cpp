@@ -10,6 +10,7 @@
 #include <csignal>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
@@ -25,6 +26,7 @@ extern "C" void on_interrupt(int) { interrupted.store(true); }
 struct RenderOptions {
   std::string scene, output = "render.png", exr, variance, cache = ".stratum-cache";
   render::RenderSettings settings;
+  SamplerOptions sampler{"sobol"};
   std::int64_t spp = 16, width = 0, height = 0, reference_spp = 1024;
   bool quiet = false, reference = false;
 };
@@ -32,6 +34,9 @@ struct RenderOptions {
 void run_render(RenderOptions& options) {
   require(options.spp >= 1 && options.spp <= (std::int64_t{1} << 24), "spp", options.spp, "must be in [1, 2^24]");
   options.settings.sampler.spp = static_cast<std::uint32_t>(options.spp);
+  render::set_pixel_sampler(options.settings.sampler, "sampler", options.sampler.sampler, options.sampler.params,
+                            options.sampler.randomize);
+  options.settings.sampler.seed = options.sampler.seed;
   render::validate_settings(options.settings);
   require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",
           options.reference_spp, "must be in [1, 2^24]");
@@ -101,11 +106,11 @@ void add_render_command(CLI::App& app) {
   command->add_option("--light-strategy", s.light_strategy, "area|solid-angle|projected-solid-angle|bsdf|mis")->capture_default_str();
   command->add_option("--hemisphere", s.hemisphere, "irradiance sampling: uniform|cosine")->capture_default_str();
   command->add_option("--max-depth", s.max_depth, "longest path")->capture_default_str();
-  command->add_option("--sampler", s.sampler.sampler, "any registry sampler")->capture_default_str();
-  command->add_option("--randomize", s.sampler.randomize, "randomizer (default: the sampler's)");
+  add_sampler_options(*command, options->sampler, "the pixel sampler (a registry sampler that takes spp points in 2D)",
+                      "seed")
+      ->capture_default_str();
   command->add_option("--time-pattern", s.sampler.time_pattern, "random|cook|magic-square (spp = m^2)");
-  command->add_option("--seed", s.sampler.seed, "seed")->capture_default_str();
-  command->add_option("--threads", s.threads, "threads")->capture_default_str();
+  add_threads_option(*command, s.threads, "threads");
   command->add_option("--passes", s.passes, "progressive passes")->capture_default_str();
   command->add_option("--time-limit", s.time_limit, "seconds; stops after the pass that reaches it (0: none)");
   command->add_option("--width", options->width, "override the scene's image width");

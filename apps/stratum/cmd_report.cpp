@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/report/report.hpp"
 #include "stratum/util/error.hpp"
@@ -31,8 +32,6 @@ void run_report(ReportCliOptions& options) {
   require(distributed::size() == 1, "processes", distributed::size(),
           "report runs as one process (its renders, studies and discrepancies split over MPI ranks when run "
           "as their own commands)");
-  require(options.threads >= 0 && options.threads <= 1024, "threads", options.threads,
-          "must be in [0, 1024] (0: every core)");
   options.report.threads = static_cast<unsigned>(options.threads);
   options.report.only.clear();
   std::string_view rest = options.only;
@@ -57,10 +56,12 @@ void add_report_command(CLI::App& app) {
       ->capture_default_str();
   command->add_flag("--quick", options->report.quick, "Smaller N, runs and spp (about a minute); same sections");
   command->add_option("--sampler", options->report.extra_samplers,
-                      "Extra sampler (name or name:randomizer) added to the pattern comparisons; repeatable");
+                      "Extra sampler, a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md), added to the pattern "
+                      "comparisons; repeatable");
+  add_spec_footer(*command);
   command->add_option("--only", options->only, "Comma-separated section ids to run (see --list)");
-  command->add_option("--threads", options->threads, "Worker threads (0: every core)")->capture_default_str();
-  command->add_option("--seed", options->report.seed, "Seed of every randomized measurement")->capture_default_str();
+  add_threads_option(*command, options->threads, "Worker threads");
+  add_seed_option(*command, options->report.seed, "Seed of every randomized measurement");
   command->add_option("--cache", options->report.cache_dir, "Folder of cached reference renders")->capture_default_str();
   command->add_flag("--list", options->list, "List the sections and exit");
   command->callback([options] { run_report(*options); });

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/registry.hpp"
 
 namespace stratum::cli {
@@ -22,7 +23,8 @@ static nlohmann::json sampler_json(const SamplerInfo& s) {
 void add_samplers_command(CLI::App& app) {
   auto* command = app.add_subcommand("samplers", "List every sampler: name, kind, dimensions, properties");
   auto json = std::make_shared<bool>(false);
-  command->add_flag("--json", *json, "print JSON");
+  command->add_flag("--json", *json, "print JSON (with each sampler's parameters)");
+  add_spec_footer(*command);
   command->callback([json] {
     if (*json) {
       nlohmann::json list = nlohmann::json::array();

@@ -3,28 +3,34 @@
 /// frequency and oscillation; text, JSON and a figure (image + radial plot).
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
+#include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/analysis/spectrum.hpp"
 #include "stratum/io/read_points.hpp"
 #include "stratum/registry.hpp"
+#ifdef STRATUM_HAS_RENDER
+#include "stratum/render/compare.hpp"
+#endif
 #include "stratum/util/error.hpp"
 
 namespace stratum::cli {
 namespace {
 namespace sa = stratum::analysis;
 
-struct SpectrumOptions {
+struct SpectrumOptions : SamplerOptions {
   std::vector<std::string> files;
-  std::string sampler, randomize, png;
+  std::string png;
   std::optional<std::int64_t> n, max_frequency;
-  std::uint64_t seed = 0;
   std::int64_t realizations = 1, threads = 1;
   bool json = false;
+  std::string image, reference;  ///< --image: the spectrum of an image (or of image − reference)
 };
 
 std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
@@ -34,6 +40,10 @@ std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
   std::vector<PointSet> sets;
   if (!o.files.empty()) {
     if (o.n) throw invalid_argument("-n", o.files.front(), "applies only to --sampler; a FILE has its own size");
+    if (!o.params.empty() || !o.randomize.empty())
+      throw invalid_argument(o.params.empty() ? "randomize" : "param",
+                             o.params.empty() ? o.randomize : o.params.front(),
+                             "applies only to --sampler; a FILE is read as it is");
     if (o.realizations != 1)
       throw invalid_argument("--realizations", std::to_string(o.realizations),
                              "applies only to --sampler; give one FILE per realization");
@@ -43,21 +53,66 @@ std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
   require(o.n.has_value(), "n", "(missing)", "--sampler needs -n N");
   require(*o.n >= 2, "n", *o.n, "must be an integer >= 2");
   require(o.realizations >= 1 && o.realizations <= 100000, "realizations", o.realizations, "must be in [1, 100000]");
+  const SamplerSpec spec = o.spec();
   for (std::int64_t r = 0; r < o.realizations; ++r) {
-    SamplerRequest request;
+    SamplerRequest request = o.request(spec);
     request.n = static_cast<std::uint64_t>(*o.n);
     request.d = 2;
     request.seed = o.seed + static_cast<std::uint64_t>(r);  // realization r uses seed + r
-    request.randomize = o.randomize;
     request.threads = static_cast<unsigned>(o.threads);
-    sets.push_back(generate_points(o.sampler, request));
+    sets.push_back(generate_points(spec.name, request));
   }
   return sets;
 }
 
+/// `spectrum --image`: where an image's variation (a render's error) goes
+/// in frequency (analysis/image_spectrum.hpp), of its luminance, or of the
+/// luminance of image − reference.
+void run_image_spectrum(const SpectrumOptions& o) {
+#ifdef STRATUM_HAS_RENDER
+  if (!o.files.empty() || !o.sampler.empty())
+    throw invalid_argument("--image", o.image, "measures an image alone: give no point FILEs and no --sampler");
+  if (!o.png.empty())
+    throw invalid_argument("--output", o.png, "draws point-set spectra; for --image use --json (radial power)");
+  const render::Image image = render::read_image(o.image);
+  std::vector<double> values;
+  if (!o.reference.empty()) {
+    values = render::luminance_error(image, render::read_image(o.reference));
+  } else {
+    render::Image black = image;
+    std::fill(black.rgb.begin(), black.rgb.end(), 0.0);
+    values = render::luminance_error(image, black);
+  }
+  const sa::ImageSpectrum s = sa::image_spectrum(values, image.width, image.height);
+  nlohmann::json power = nlohmann::json::array();
+  for (double p : s.radial_power) power.push_back(std::isfinite(p) ? nlohmann::json(p) : nullptr);
+  const nlohmann::json data = {{"source", o.image},
+                               {"reference", o.reference.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.reference)},
+                               {"width", s.width},
+                               {"height", s.height},
+                               {"variance", s.variance},
+                               {"low_frequency_power", s.low_frequency_power},
+                               {"radial", {{"frequency", s.radial_frequency}, {"power", power}}}};
+  if (o.json) {
+    fmt::print("{}\n", data.dump(2));
+    return;
+  }
+  fmt::print("# spectrum of the luminance of {}{} ({}x{}), normalized: white noise = 1\n", o.image,
+             o.reference.empty() ? "" : " - " + o.reference, s.width, s.height);
+  fmt::print("low_frequency_power {:.6g}   (mean below a quarter of Nyquist; < 1: blue noise)\n", s.low_frequency_power);
+  fmt::print("variance            {:.6g}\n", s.variance);
+  fmt::print("# {:>10} {:>12}\n", "frequency", "power");
+  for (std::size_t r = 0; r < s.radial_power.size(); ++r)
+    fmt::print("  {:>10.5f} {:>12.6g}\n", s.radial_frequency[r], s.radial_power[r]);
+#else
+  throw invalid_argument("--image", o.image, "needs the renderer's image reader (a build with STRATUM_BUILD_RENDER)");
+#endif
+}
+
 void run_spectrum(const SpectrumOptions& o) {
+  if (!o.image.empty()) return run_image_spectrum(o);
+  if (!o.reference.empty()) throw invalid_argument("--reference", o.reference, "applies only to --image");
   const auto figure = plot::prepare_plot("output", o.png);  // checked before the work
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   if (o.max_frequency)
     require(*o.max_frequency >= 1 && *o.max_frequency <= 1 << 24, "max-frequency", *o.max_frequency,
             "must be an integer in [1, 2^24] (and (2K+1)^d at most 2^25 values)");
@@ -113,17 +168,19 @@ void add_spectrum_command(CLI::App& app) {
   auto* command = app.add_subcommand(
       "spectrum", "Fourier spectrum of a 2D (or 1D) point set: radial power, anisotropy, effective Nyquist, oscillation");
   command->add_option("files", o->files, "point files, one per realization (.txt, .csv, .npy); or use --sampler");
-  command->add_option("-s,--sampler", o->sampler, "use this sampler's 2D points (realization r: seed + r)");
+  add_sampler_options(*command, *o, "use this sampler's 2D points (realization r: seed + r)",
+                      "seed of the first realization");
   command->add_option("-n", o->n, "number of points (with --sampler)");
-  command->add_option("--seed", o->seed, "seed of the first realization")->capture_default_str();
-  command->add_option("--randomize", o->randomize, "the sampler's randomizer (default: its own)");
   command->add_option("-r,--realizations", o->realizations, "realizations to average (with --sampler)")
       ->capture_default_str();
   command->add_option("-k,--max-frequency", o->max_frequency,
                       "largest integer frequency K per axis (default: 2.5 sqrt(N), at least 16, at most 1024)");
-  command->add_option("--threads", o->threads, "threads (results do not depend on it)")->capture_default_str();
+  add_threads_option(*command, o->threads, "threads (results do not depend on it)");
   command->add_option("-o,--output", o->png, "write a PNG: spectrum image and radial plot");
   command->add_flag("--json", o->json, "print JSON (with the full periodogram `power`, row-major, ky then kx)");
+  command->add_option("--image", o->image,
+                      "instead: the power spectrum of an image's luminance (.exr, .png, ...), e.g. a render's error");
+  command->add_option("--reference", o->reference, "with --image: the spectrum of image - reference");
   command->callback([o] { run_spectrum(*o); });
 }
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/dimension_study.hpp"
@@ -63,7 +64,6 @@ nlohmann::json to_json(const sa::DimensionStudy& study) {
 void run_dimension(const DimensionOptions& o) {
   const auto figure = plot::prepare_plot("plot", o.plot);  // checked before the work
   require(o.runs >= 2 && o.runs <= 100000, "runs", o.runs, "must be in [2, 100000] (an RMSE needs 2 runs)");
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   sa::DimensionStudyRequest request;
   const auto [d_lo, d_hi] = parse_range("dims", o.dims, 64);
   const auto [n_lo, n_hi] = parse_range("n", o.counts, std::uint64_t{1} << 24);
@@ -106,8 +106,8 @@ void add_study_dimension_command(CLI::App& study) {
   command->add_option("--integrand", o->integrand, "sine-product or a smooth registry integrand (genz-gaussian, ...)")
       ->capture_default_str();
   command->add_flag("--no-sobol", o->no_sobol, "leave out the Owen-scrambled Sobol' runs");
-  command->add_option("--seed", o->seed, "seed of the random points")->capture_default_str();
-  command->add_option("--threads", o->threads, "threads (results do not depend on it)")->capture_default_str();
+  add_seed_option(*command, o->seed, "seed of the random points");
+  add_threads_option(*command, o->threads, "threads (results do not depend on it)");
   command->add_flag("--json", o->json, "print JSON");
   command->add_option("--plot", o->plot, "write a figure of error vs N per d (PNG)");
   command->callback([o] { run_dimension(*o); });

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/importance_study.hpp"
@@ -61,7 +62,6 @@ void run_importance(const ImportanceOptions& o) {
   const auto figure = plot::prepare_plot("plot", o.plot);  // checked before the work
   require(o.runs >= 2 && o.runs <= 100000, "runs", o.runs, "must be in [2, 100000] (a standard error needs 2 runs)");
   require(o.samples >= 2 && o.samples <= (std::int64_t{1} << 30), "samples", o.samples, "must be in [2, 2^30]");
-  require(o.threads >= 1 && o.threads <= 1024, "threads", o.threads, "must be in [1, 1024]");
   sa::ImportanceStudyRequest request;
   request.runs = static_cast<unsigned>(o.runs);
   request.samples = static_cast<std::uint64_t>(o.samples);
@@ -91,9 +91,8 @@ void add_study_importance_command(CLI::App& study) {
   command->add_option("--samples", o->samples, "samples per replicate")->capture_default_str();
   command->add_option("--sizes", o->sizes, "light sides for study (b)")->delimiter(',')->capture_default_str();
   command->add_option("--distances", o->distances, "light heights for study (b)")->delimiter(',')->capture_default_str();
-  command->add_option("--seed", o->seed, "seed of the random numbers")->capture_default_str();
-  command->add_option("--threads", o->threads, "threads (results other than timings do not depend on it)")
-      ->capture_default_str();
+  add_seed_option(*command, o->seed, "seed of the random numbers");
+  add_threads_option(*command, o->threads, "threads (results other than timings do not depend on it)");
   command->add_flag("--json", o->json, "print JSON");
   command->add_option("--plot", o->plot, "write a figure of the variance and efficiency ratios (PNG)");
   command->callback([o] { run_importance(*o); });

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/convergence.hpp"
@@ -58,13 +59,12 @@ void run_mitchell(const MitchellOptions& options) {
   require(options.realizations >= 1 && options.realizations <= 100000, "realizations", options.realizations,
           "must be in [1, 10^5]");
   require(options.lines >= 1 && options.lines <= 100000000, "lines", options.lines, "must be in [1, 10^8]");
-  require(options.threads >= 0 && options.threads <= 1024, "threads", options.threads, "must be in [0, 1024] (0: all cores)");
   study_options.realizations = static_cast<std::size_t>(options.realizations);
   study_options.lines = static_cast<std::size_t>(options.lines);
   study_options.seed = options.seed;
   for (const auto& extra : options.extras) {
     const auto choice = analysis::parse_sampler_choice(extra);
-    study_options.extra_patterns.push_back({extra, choice.name, {}, choice.randomize});
+    study_options.extra_patterns.push_back({extra, choice.name, choice.params, choice.randomize});
   }
   study_options.threads = static_cast<unsigned>(options.threads);
   const auto study = analysis::run_mitchell_study(study_options);
@@ -82,10 +82,12 @@ void add_study_mitchell_command(CLI::App& study) {
   command->add_option("--counts", options->counts, "point counts, comma-separated")->delimiter(',')->capture_default_str();
   command->add_option("--realizations", options->realizations, "realizations K per pattern and count")->capture_default_str();
   command->add_option("--lines", options->lines, "random lines L per realization")->capture_default_str();
-  command->add_option("--seed", options->seed, "seed of patterns and lines")->capture_default_str();
-  command->add_option("--threads", options->threads, "threads (0: all cores)")->capture_default_str();
+  add_seed_option(*command, options->seed, "seed of patterns and lines");
+  add_threads_option(*command, options->threads, "threads");
   command->add_option("--sampler", options->extras,
-                      "an extra registry pattern (name or name:randomizer) compared after Mitchell's five; repeatable");
+                      "an extra registry pattern, a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md), compared "
+                      "after Mitchell's five; repeatable");
+  add_spec_footer(*command);
   command->add_flag("--json", options->json, "print the table as JSON");
   command->add_option("--plot", options->plot, "write a figure (PNG): each pattern, its radial spectrum, the table");
   command->callback([options] { run_mitchell(*options); });

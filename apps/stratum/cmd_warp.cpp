@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "point_input.hpp"
+#include "sampler_options.hpp"
 #include "stratum/io/points.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
@@ -20,9 +21,8 @@ namespace {
 struct WarpOptions {
   std::string map;
   std::int64_t n = 0;
-  std::string sampler = "random";
-  std::uint64_t seed = 0;
-  std::vector<std::string> params;
+  SamplerOptions sampler{"random"};
+  std::vector<std::string> warp_params;
   std::string format;
   std::string output;
   bool list = false;
@@ -62,20 +62,20 @@ void run_warp(const WarpOptions& options) {
   if (options.list) return list_warps();
   require(options.n >= 1, "n", options.n, "must be a positive integer");
   WarpParams params;
-  for (const auto& item : options.params) {
+  for (const auto& item : options.warp_params) {
     const auto equals = item.find('=');
     if (equals == std::string::npos || equals == 0)
-      throw invalid_argument("param", item, "must be written key=v1,v2,... or key=@FILE");
+      throw invalid_argument("warp-param", item, "must be written key=v1,v2,... or key=@FILE");
     const std::string key = item.substr(0, equals);
     params[key] = parse_numbers(key, item.substr(equals + 1));
   }
   TableOutput table_output(options.output, options.format);  // checked before the work
   const auto warp = make_warp(options.map, params);
-  SamplerRequest request;
+  const SamplerSpec spec = options.sampler.spec();
+  SamplerRequest request = options.sampler.request(spec);
   request.n = static_cast<std::uint64_t>(options.n);
   request.d = warp->input_dim();
-  request.seed = options.seed;
-  const PointSet u = generate_points(options.sampler, request);
+  const PointSet u = generate_points(spec.name, request);
   const std::vector<double> points = warp_sample(*warp, u.data.get(), u.n);
   const std::vector<double> pdf = warp_pdf(*warp, points.data(), u.n);
 
@@ -94,10 +94,11 @@ void add_warp_command(CLI::App& app) {
   auto* command = app.add_subcommand("warp", "Warp uniform points to a domain; writes each point and its pdf");
   command->add_option("-m,--map", options->map, "warp name (see `stratum warp --list`)");
   command->add_option("-n", options->n, "number of points");
-  command->add_option("-s,--sampler", options->sampler, "sampler of the uniform input (2D for 2D warps)")
+  add_sampler_options(*command, options->sampler, "sampler of the uniform input (2D for 2D warps)",
+                      "seed of the sampler")
       ->capture_default_str();
-  command->add_option("--seed", options->seed, "seed of the sampler")->capture_default_str();
-  command->add_option("-p,--param", options->params, "warp parameter key=v1,v2,... or key=@FILE (repeatable)");
+  command->add_option("--warp-param", options->warp_params,
+                      "warp parameter KEY=V1,V2,... or KEY=@FILE (repeatable)");
   command->add_option("--format", options->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", options->output, "output file (stdout when absent)");
   command->add_flag("--list", options->list, "list the warps with their domains and parameters");

@@ -10,11 +10,10 @@ namespace stratum::cli {
 
 void add_point_input_options(CLI::App& command, PointInput& input) {
   command.add_option("file", input.file, "point file (.txt whitespace, .csv, .npy float64); or use --sampler");
-  command.add_option("-s,--sampler", input.sampler, "measure this sampler's points instead of a file");
+  add_sampler_options(command, input, "measure this sampler's points instead of a file",
+                      "seed of the sampler's randomization");
   command.add_option("-n", input.n, "number of points (with --sampler)");
   command.add_option("-d", input.d, "dimensions (with --sampler; default 2)");
-  command.add_option("--seed", input.seed, "seed of the sampler's randomization")->capture_default_str();
-  command.add_option("--randomize", input.randomize, "the sampler's randomizer (default: its own)");
 }
 
 PointSet load_points(const PointInput& o) {
@@ -22,6 +21,10 @@ PointSet load_points(const PointInput& o) {
     throw invalid_argument("input", o.file.empty() ? "(none)" : o.file + " and --sampler " + o.sampler,
                            "give either a point FILE or --sampler S -n N [-d D]");
   if (!o.file.empty()) {
+    if (!o.params.empty() || !o.randomize.empty())
+      throw invalid_argument(o.params.empty() ? "randomize" : "param",
+                             o.params.empty() ? o.randomize : o.params.front(),
+                             "applies only to --sampler; a FILE is read as it is");
     if (o.n || o.d) throw invalid_argument("-n/-d", o.file, "apply only to --sampler; a FILE has its own size");
     return io::read_points_strict(o.file);
   }
@@ -29,13 +32,12 @@ PointSet load_points(const PointInput& o) {
   require(*o.n >= 1, "n", *o.n, "must be a positive integer");
   const std::int64_t d = o.d.value_or(2);
   require(d >= 1 && d <= std::numeric_limits<unsigned>::max(), "d", d, "must be a positive integer");
-  SamplerRequest request;
+  const SamplerSpec spec = o.spec();
+  SamplerRequest request = o.request(spec);
   request.n = static_cast<std::uint64_t>(*o.n);
   request.d = static_cast<unsigned>(d);
-  request.seed = o.seed;
-  request.randomize = o.randomize;
   request.threads = static_cast<unsigned>(o.threads);
-  return generate_points(o.sampler, request);
+  return generate_points(spec.name, request);
 }
 
 TableOutput::TableOutput(const std::string& output, const std::string& format)

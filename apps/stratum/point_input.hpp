@@ -1,6 +1,7 @@
 #pragma once
 /// The points a measuring command reads: a point FILE, or a registry
-/// sampler's points (--sampler S -n N [-d D] [--seed] [--randomize]); and
+/// sampler's points (--sampler SPEC -n N [-d D] [-p KEY=VALUE] [--seed]
+/// [--randomize]: the shared sampler options of sampler_options.hpp); and
 /// where a command's table goes (-o FILE or stdout).
 #include <CLI/CLI.hpp>
 
@@ -9,20 +10,20 @@
 #include <optional>
 #include <string>
 
+#include "sampler_options.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/io/points.hpp"
 #include "stratum/registry.hpp"
 
 namespace stratum::cli {
 
-struct PointInput {
-  std::string file, sampler, randomize;
+struct PointInput : SamplerOptions {
+  std::string file;
   std::optional<std::int64_t> n, d;
-  std::uint64_t seed = 0;
   std::int64_t threads = 1;
 };
 
-/// Adds FILE, --sampler, -n, -d, --seed and --randomize to `command`.
+/// Adds FILE, the sampler options (-s, -p, --randomize, --seed), -n and -d to `command`.
 void add_point_input_options(CLI::App& command, PointInput& input);
 
 /// The points: read from the file, or generated (default d = 2). Throws

@@ -26,7 +26,7 @@ py::dict study_mitchell(const std::vector<std::size_t>& counts, std::size_t real
   options.threads = threads;
   for (const auto& extra : extras) {
     const auto choice = analysis::parse_sampler_choice(extra);
-    options.extra_patterns.push_back({extra, choice.name, {}, choice.randomize});
+    options.extra_patterns.push_back({extra, choice.name, choice.params, choice.randomize});
   }
   analysis::MitchellStudy study;
   {

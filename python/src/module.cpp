@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 
 namespace py = pybind11;
@@ -34,22 +35,28 @@ py::list sampler_list() {
   return list;
 }
 
-py::array_t<double> points(const std::string& name, std::optional<std::uint64_t> n, unsigned d, std::uint64_t seed,
-                           std::uint64_t start, const std::string& randomize, std::optional<double> radius, unsigned threads,
-                           const std::map<std::string, std::string>& params) {
+/// `sampler` is a spec (docs/samplers.md); `params` and `randomize` are folded
+/// in as the CLI folds in -p and --randomize (a key or randomizer given twice
+/// is an error naming both).
+py::array_t<double> points(const std::string& sampler, std::optional<std::uint64_t> n, unsigned d, std::uint64_t seed,
+                           std::uint64_t start, const std::string& randomize, std::optional<double> radius,
+                           std::int64_t threads, const std::map<std::string, std::string>& params) {
+  std::vector<std::string> items;
+  for (const auto& [key, value] : params) items.push_back(key + "=" + value);
+  const stratum::SamplerSpec spec = stratum::combine_sampler_options(sampler, items, randomize);
   stratum::SamplerRequest request;
   request.n = n;
   request.d = d;
   request.seed = seed;
   request.start = start;
-  request.randomize = randomize;
+  request.randomize = spec.randomize;
   request.radius = radius;
-  request.threads = threads;
-  request.params = params;
+  request.threads = stratum::resolve_threads(threads);
+  request.params = spec.params;
   stratum::PointSet result;
   {
     py::gil_scoped_release release;
-    result = stratum::generate_points(name, request);
+    result = stratum::generate_points(spec.name, request);
   }
   return to_numpy(std::move(result));
 }
@@ -61,9 +68,28 @@ PYBIND11_MODULE(_stratum, m) {
   py::register_exception<stratum::invalid_argument>(m, "InvalidArgument", PyExc_ValueError);
   m.def("samplers", &sampler_list, "Every registry sampler as a dict");
   m.def("randomizers", [] { return stratum::randomizers(); }, "Every randomizer (name, description)");
-  m.def("points", &points, py::arg("name"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("start"), py::arg("randomize"),
+  m.def("points", &points, py::arg("sampler"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("start"), py::arg("randomize"),
         py::arg("radius"), py::arg("threads"), py::arg("params"));
   m.def("max_coordinates", &stratum::max_coordinates);
+  m.def(
+      "parse_spec",
+      [](const std::string& text) {
+        const stratum::SamplerSpec spec = stratum::parse_sampler_spec(text);
+        return py::dict(py::arg("name") = spec.name, py::arg("params") = spec.params,
+                        py::arg("randomize") = spec.randomize);
+      },
+      py::arg("spec"), "A sampler spec NAME[(KEY=VALUE,...)][:RANDOMIZER] as a dict, checked against the registry");
+  m.def(
+      "format_spec",
+      [](const std::string& name, const std::map<std::string, std::string>& params, const std::string& randomize) {
+        return stratum::format_sampler_spec({name, params, randomize});
+      },
+      py::arg("name"), py::arg("params"), py::arg("randomize"), "The canonical text of a sampler spec");
+  m.def("split_spec_list", &stratum::split_sampler_list, py::arg("text"),
+        "A list of specs split on the commas outside parentheses");
+  m.def("resolve_threads", &stratum::resolve_threads, py::arg("threads"),
+        "The thread rule of every face: 0 = every core, else 1..1024");
+  m.def("parse_seed", &stratum::parse_seed, py::arg("text"), "A seed: exactly the integers in [0, 2^64)");
   stratum::python::bind_warps(m);
   stratum::python::bind_measures(m);
   stratum::python::bind_spectra(m);

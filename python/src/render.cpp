@@ -71,6 +71,9 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
                  py::arg("efficiency") = r.efficiency, py::arg("mse_ratio") = r.mse_ratio,
                  py::arg("efficiency_ratio") = r.efficiency_ratio);
     if (!r.variance_path.empty()) row["variance"] = r.variance_path;
+    row["low_frequency_power"] = r.low_frequency_power;  // NaN where the error has no spectrum
+    row["error_spectrum"] = py::dict(py::arg("frequency") = r.error_radial_frequency,
+                                     py::arg("power") = r.error_radial_power);
     out.append(row);
   }
   return out;
@@ -93,6 +96,7 @@ void bind_render(py::module_& m) {
         s.hemisphere = hemisphere;
         s.max_depth = max_depth;
         s.sampler = render::PixelSamplerSettings{sampler, randomize, seed, spp, time_pattern};
+        render::set_pixel_sampler(s.sampler, "sampler", sampler, {}, randomize);
         s.threads = threads;
         s.passes = passes;
         s.pixel_centers = pixel_centers;

@@ -5,10 +5,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "bindings.hpp"
 #include "stratum/analysis/geometry.hpp"
+#include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/analysis/spectrum.hpp"
 #include "stratum/util/error.hpp"
 
@@ -19,6 +21,26 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 namespace sa = stratum::analysis;
+
+/// image_spectrum.hpp on a (H, W) array of values.
+py::dict image_spectrum(const Array& values) {
+  if (values.ndim() != 2)
+    throw invalid_argument("image", "an array of " + std::to_string(values.ndim()) + " dimensions",
+                           "must have shape (height, width) (or (height, width, 3): its luminance)");
+  const int height = static_cast<int>(values.shape(0)), width = static_cast<int>(values.shape(1));
+  const std::vector<double> copy(values.data(), values.data() + values.size());
+  sa::ImageSpectrum s;
+  {
+    py::gil_scoped_release release;
+    s = sa::image_spectrum(copy, width, height);
+  }
+  py::array_t<double> power({s.height, s.width});
+  std::copy(s.power.begin(), s.power.end(), power.mutable_data());
+  return py::dict(py::arg("power") = power, py::arg("low_frequency_power") = s.low_frequency_power,
+                  py::arg("variance") = s.variance,
+                  py::arg("radial") = py::dict(py::arg("frequency") = s.radial_frequency,
+                                               py::arg("power") = s.radial_power));
+}
 
 /// realizations: a (K, n, d) array.
 py::dict spectrum(const Array& realizations, int max_frequency, unsigned threads) {
@@ -70,6 +92,7 @@ py::dict pair_correlation(const Array& x, const std::vector<double>& radii, doub
 
 void bind_spectra(py::module_& m) {
   m.def("_spectrum", &spectrum, py::arg("realizations"), py::arg("max_frequency"), py::arg("threads"));
+  m.def("_image_spectrum", &image_spectrum, py::arg("values"));
   m.def("_pair_correlation", &pair_correlation, py::arg("x"), py::arg("radii"), py::arg("sigma"), py::arg("threads"));
   m.def("_default_pair_correlation_grid", [](std::size_t n, std::size_t d, std::size_t count) {
     const sa::PairCorrelation grid = sa::default_pair_correlation_grid(n, d, count);

@@ -12,6 +12,7 @@
 #include "stratum/analysis/dimension_study.hpp"
 #include "stratum/analysis/importance_study.hpp"
 #include "stratum/analysis/integrands.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 
 namespace py = pybind11;
@@ -50,12 +51,8 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
                    std::uint64_t seed, unsigned threads) {
   sa::IntegrationRequest request;
   request.integrand = {integrand, d, params};
-  request.sampler = sa::parse_sampler_choice(sampler);
-  if (!randomize.empty()) {
-    if (!request.sampler.randomize.empty() && request.sampler.randomize != randomize)
-      throw invalid_argument("randomize", randomize, "conflicts with sampler " + sampler);
-    request.sampler.randomize = randomize;
-  }
+  const SamplerSpec spec = combine_sampler_options(sampler, {}, randomize);
+  request.sampler = {spec.name, spec.randomize, spec.params};
   request.n = n;
   request.runs = runs;
   request.seed = seed;

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numbers
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
 from . import measures as _measures, mitchell as _mitchell, render as _render, report as _report, spectra as _spectra
@@ -24,7 +24,7 @@ from .spectra import *  # noqa: F401,F403  spectrum
 from .studies import *  # noqa: F401,F403  integrands, integrate, converge, studies
 from .warps import *  # noqa: F401,F403  warp, warp_pdf, warp_invert
 
-__all__ = ["samplers", "randomizers", "points", "InvalidArgument", "qmc"] + (
+__all__ = ["samplers", "randomizers", "points", "parse_spec", "format_spec", "InvalidArgument", "qmc"] + (
     _measures.__all__ + _mitchell.__all__ + _render.__all__ + _report.__all__ + _spectra.__all__ + _studies.__all__ + _warps.__all__)
 
 
@@ -46,6 +46,25 @@ def samplers() -> list[dict]:
 def randomizers() -> list[tuple[str, str]]:
     """Every randomizer name with a one-line description."""
     return _stratum.randomizers()
+
+
+def parse_spec(spec: str) -> dict:
+    """A sampler spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md) as
+    a dict with name, params (text values) and randomize ("" = the sampler's
+    default), checked against the registry by the same parser as the CLI:
+
+    >>> stratum.parse_spec("lattice(generator=1,55,133):cp")
+    {'name': 'lattice', 'params': {'generator': '1,55,133'}, 'randomize': 'cp'}
+    """
+    if not isinstance(spec, str):
+        raise InvalidArgument(f"invalid sampler = {spec!r}: must be a spec string, e.g. 'sobol:owen'")
+    return _stratum.parse_spec(spec)
+
+
+def format_spec(name: str, params: dict | None = None, randomize: str | None = None) -> str:
+    """The canonical text of a spec: parse_spec(format_spec(**parse_spec(s))) == parse_spec(s)."""
+    text = {str(key): _param_text(key, value) for key, value in (params or {}).items()}
+    return _stratum.format_spec(str(name), text, randomize or "")
 
 
 def _param_text(name, value) -> str:
@@ -72,6 +91,12 @@ def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str |
            radius: float | None = None, threads: int = 1, start: int = 0, **params):
     """Points of sampler `name` as a float64 array of shape (n, d).
 
+    `name` is a sampler spec NAME[(KEY=VALUE,...)][:RANDOMIZER] as on the
+    command line ("sobol:owen", "poisson-disk(periodic=1)",
+    "jittered(strata=4x8)"; docs/samplers.md); `randomize=` and keyword
+    parameters add to it, and giving a key or the randomizer both ways is an
+    error naming both. threads=0 uses every core.
+
     randomize=None uses the sampler's documented default (first in its
     `randomizers` list); "none" asks for the unrandomized construction.
     start is the index of the first point (sequences only, like scipy's
@@ -81,9 +106,8 @@ def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str |
     if n is not None:
         n = _positive_int("n", n, "must be a positive integer")
     d = _positive_int("d", d, "must be a positive integer")
-    threads = _positive_int("threads", threads, "must be a positive integer")
-    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or not 0 <= seed < 2**64:
-        raise InvalidArgument(f"invalid seed = {seed!r}: must be an integer in [0, 2^64)")
+    threads = _checks.threads(threads)
+    seed = _checks.seed(seed)
     if d > 2**32 - 1:
         raise InvalidArgument(f"invalid d = {d}: must be below 2^32")
     if radius is not None:

@@ -30,7 +30,7 @@ import warnings
 
 import numpy as np
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
 __all__ = ["measures", "measure", "discrepancy", "local_discrepancy", "star_discrepancy_box", "koksma_hlawka",
@@ -66,10 +66,7 @@ def _param_text(name, value) -> str:
 
 
 def _threads(threads) -> int:
-    if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, (numbers.Integral, np.integer)) \
-            or not 1 <= threads <= 1024:
-        raise InvalidArgument(f"invalid threads = {threads!r}: must be an integer in [1, 1024]")
-    return int(threads)
+    return _checks.threads(threads)
 
 
 def measures() -> list[dict]:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numbers
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
 __all__ = ["study_mitchell"]
@@ -48,8 +48,8 @@ def study_mitchell(counts=(16, 256, 1600), realizations: int = 20, lines: int = 
         raise InvalidArgument("invalid counts = []: give at least one count")
     realizations = _integer("realizations", realizations, 1, 10**5, "must be an integer in [1, 10^5]")
     lines = _integer("lines", lines, 1, 10**8, "must be an integer in [1, 10^8]")
-    seed = _integer("seed", seed, 0, 2**64 - 1, "must be an integer in [0, 2^64)")
-    threads = _integer("threads", threads, 0, 1024, "must be an integer in [0, 1024] (0: all cores)")
+    seed = _checks.seed(seed)
+    threads = _checks.threads(threads)
     if isinstance(samplers, (str, bytes)):
         samplers = [samplers]
     return _stratum.study_mitchell(counts, realizations, lines, seed, threads, [str(s) for s in samplers])

@@ -9,7 +9,7 @@ import json
 import numbers
 import os
 
-from . import _stratum
+from . import _checks, _stratum
 
 __all__ = ["render", "compare", "comparisons"] if hasattr(_stratum, "comparisons") else []
 
@@ -50,9 +50,7 @@ def _path(name, value):
 
 
 def _seed(value):
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not 0 <= value < 2**64:
-        raise _error("seed", value, "must be an integer in [0, 2^64)")
-    return int(value)
+    return _checks.seed(value)
 
 
 def render(scene=None, width: int | None = None, height: int | None = None, spp: int = 16, integrator: str = "direct",
@@ -78,7 +76,7 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
         _text("integrator", integrator), _count("light_samples", light_samples, 1, 65536),
         _text("light_strategy", light_strategy), _text("hemisphere", hemisphere), _count("max_depth", max_depth, 1, 1024),
         _text("sampler", sampler), _text("randomize", randomize, True), _text("time_pattern", time_pattern, True),
-        _seed(seed), _count("threads", threads, 1, 1024), _count("passes", passes), pixel_centers,
+        _seed(seed), _checks.threads(threads), _count("passes", passes), pixel_centers,
         _count("reference_spp", reference_spp) if reference else 0, _path("cache", cache))
     if with_variance:
         if variance is None:
@@ -124,4 +122,4 @@ def compare(scene=None, builtin: str | None = None, configs: list[dict] | None =
                             _count("reference_spp", reference_spp), _path("cache", cache),
                             0.0 if equal_time is None else float(equal_time), _path("variance_dir", variance_dir),
                             _count("width", width, 1, 16384), _count("height", height, 1, 16384),
-                            _count("threads", threads, 1, 1024), _seed(seed))
+                            _checks.threads(threads), _seed(seed))

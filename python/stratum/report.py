@@ -1,7 +1,7 @@
 """The lecture reproduced as one HTML page (LECTURE.md §1–13), as `stratum report`."""
 from __future__ import annotations
 
-from . import _stratum
+from . import _checks, _stratum
 
 __all__ = ["report", "report_sections"] if hasattr(_stratum, "report") else []
 
@@ -16,9 +16,10 @@ def report(directory: str = "report", quick: bool = False, samplers=(), only=(),
     """Writes DIRECTORY/index.html, report.json and figures/; returns
     {"index": path, "seconds": s, "numbers": {section id: measurements}}.
 
-    samplers: extra registry samplers ("name" or "name:randomizer") added to
-    the pattern comparisons; only: section ids to run (default all).
+    samplers: extra registry samplers (specs NAME[(KEY=VALUE,...)][:RANDOMIZER],
+    docs/samplers.md) added to the pattern comparisons; only: section ids to
+    run (default all). threads=0: every core.
     Raises stratum.InvalidArgument on bad options, before any work."""
-    index, numbers, seconds = _stratum.report(str(directory), bool(quick), list(samplers), list(only), int(threads),
-                                              int(seed), str(cache), bool(verbose))
+    index, numbers, seconds = _stratum.report(str(directory), bool(quick), list(samplers), list(only),
+                                              _checks.threads(threads), _checks.seed(seed), str(cache), bool(verbose))
     return {"index": index, "seconds": seconds, "numbers": numbers}

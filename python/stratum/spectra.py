@@ -20,10 +20,10 @@ import numbers
 
 import numpy as np
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["spectrum", "pair_correlation"]
+__all__ = ["spectrum", "pair_correlation", "image_spectrum"]
 
 
 def _realizations(x) -> np.ndarray:
@@ -52,6 +52,29 @@ def _positive_int(name, value):
     return int(value)
 
 
+def image_spectrum(image, reference=None) -> dict:
+    """The power spectrum of an image (docs/render.md): of its luminance
+    (Rec. 709 weights) when it has 3 channels, of ``image - reference`` when
+    a reference is given (a render's error). Normalized so that white noise
+    has power 1 at every frequency but 0 (the mean is removed): returns
+    ``power`` (array (H, W), zero frequency at [H//2, W//2]),
+    ``low_frequency_power`` (the mean below a quarter of Nyquist: 1 white,
+    < 1 blue noise), ``variance`` and ``radial`` (frequency in cycles per
+    pixel, power), as ``stratum spectrum --image``."""
+    values = np.asarray(image, dtype=np.float64)
+    if reference is not None:
+        ref = np.asarray(reference, dtype=np.float64)
+        if ref.shape != values.shape:
+            raise InvalidArgument(f"invalid reference = an array of shape {ref.shape}: "
+                                  f"must have the image's shape {values.shape}")
+        values = values - ref
+    if values.ndim == 3 and values.shape[2] == 3:
+        values = values @ np.array([0.2126, 0.7152, 0.0722])
+    result = _stratum._image_spectrum(np.ascontiguousarray(values))
+    result["radial"] = {key: np.asarray(value) for key, value in result["radial"].items()}
+    return result
+
+
 def spectrum(x, max_frequency: int | None = None, threads: int = 1) -> dict:
     """The mean periodogram of one point set (array (n, d)) or of K
     realizations (a list of (n, d) arrays, or an array (K, n, d)), d = 1 or 2.
@@ -69,7 +92,7 @@ def spectrum(x, max_frequency: int | None = None, threads: int = 1) -> dict:
     if max_frequency is None:
         max_frequency = min(1024, max(16, math.ceil(2.5 * math.sqrt(max(n, 1)))))
     k = _positive_int("max_frequency", max_frequency)
-    result = _stratum._spectrum(array, k, _positive_int("threads", threads))
+    result = _stratum._spectrum(array, k, _checks.threads(threads))
     result["frequencies"] = np.arange(-k, k + 1) / result["frequency_scale"]
     result["radial"] = {key: np.asarray(value) for key, value in result["radial"].items()}
     result["anisotropy_db"] = result["radial"]["anisotropy_db"]
@@ -95,5 +118,5 @@ def pair_correlation(x, radii=None, sigma: float | None = None, threads: int = 1
         radii = default_radii if radii is None else radii
         sigma = default_sigma if sigma is None else sigma
     radii = np.atleast_1d(np.asarray(radii, dtype=np.float64)).ravel().tolist()
-    result = _stratum._pair_correlation(array, radii, float(sigma), _positive_int("threads", threads))
+    result = _stratum._pair_correlation(array, radii, float(sigma), _checks.threads(threads))
     return {"r": np.asarray(result["r"]), "g": np.asarray(result["g"]), "sigma": result["sigma"]}

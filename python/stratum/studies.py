@@ -12,7 +12,7 @@ import numbers
 
 import numpy as np
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
 __all__ = ["integrands", "integrate", "converge"]
@@ -40,9 +40,7 @@ def _dimension(d):
 
 
 def _seed(seed):
-    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or not 0 <= seed < 2**64:
-        raise InvalidArgument(f"invalid seed = {seed!r}: must be an integer in [0, 2^64)")
-    return int(seed)
+    return _checks.seed(seed)
 
 
 def _small(name, value, allowed, low, high):
@@ -72,8 +70,9 @@ def integrands() -> list[dict]:
 
 def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | None = None, seed: int = 0,
               randomize: str | None = None, runs: int = 1, threads: int = 1, **params) -> dict:
-    """Estimate `integrand` over [0,1]^d with `n` points of `sampler`
-    ("name" or "name:randomizer").
+    """Estimate `integrand` over [0,1]^d with `n` points of `sampler`, a
+    spec NAME[(KEY=VALUE,...)][:RANDOMIZER] ("sobol:owen",
+    "jittered(strata=4x8)"; docs/samplers.md).
 
     runs=1: one point set; standard_error is s/sqrt(n) of its values
     (standard_error_kind "iid": right for i.i.d. points, only indicative for
@@ -86,15 +85,16 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     """
     n = _count("n", n, "must be a positive integer")
     runs = _small("runs", runs, "must be in [1, 1000000]", 1, 1000000)
-    threads = _small("threads", threads, "must be in [1, 1024]", 1, 1024)
+    threads = _checks.threads(threads)
     return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize or "", n, runs,
                               _seed(seed), threads)
 
 
 def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | None = None, seed: int = 0,
              threads: int = 1, **params) -> dict:
-    """Convergence study: for each sampler ("name" or "name:randomizer"; a
-    list or a comma-separated string) and each N, `runs` independent
+    """Convergence study: for each sampler (a spec
+    NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md; a list, or one string
+    split on the commas outside parentheses) and each N, `runs` independent
     randomizations (run r of sampler s at N seeded with hash(seed, s, N, r)).
 
     n: "A:B" (powers of two from A to B), "A:B:F" (A, A*F, ... up to B) or a
@@ -107,7 +107,7 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     `threads`.
     """
     if isinstance(samplers, str):
-        samplers = samplers.split(",")
+        samplers = _stratum.split_spec_list(samplers)
     samplers = list(samplers)
     if not samplers or not all(isinstance(s, str) for s in samplers):
         raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")
@@ -117,7 +117,7 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
         values = [n] if isinstance(n, numbers.Integral) else list(np.asarray(n).ravel().tolist())
         counts = [_count("n", v, "must be positive integers") for v in values]
     runs = _small("runs", runs, "must be in [2, 1000000] (a variance needs 2 runs)", 2, 1000000)
-    threads = _small("threads", threads, "must be in [1, 1024]", 1, 1024)
+    threads = _checks.threads(threads)
     return _stratum.converge(integrand, _dimension(d), _integrand_params(params), samplers, counts, runs, _seed(seed),
                              threads)
 
@@ -187,8 +187,8 @@ def study_dimension(dims="1:10", n="16:65536", runs: int = 16, rule: str = "midp
     lo_d, hi_d = _studies_range("dims", dims, 64)
     lo_n, hi_n = _studies_range("n", n, 2**24)
     runs = _studies_int("runs", runs, 2, 100000, "must be in [2, 100000] (an RMSE needs 2 runs)")
-    threads = _studies_int("threads", threads, 1, 1024, "must be in [1, 1024]")
-    seed = _studies_int("seed", seed, 0, 2**64 - 1, "must be an integer in [0, 2^64)")
+    threads = _checks.threads(threads)
+    seed = _checks.seed(seed)
     return _stratum.study_dimension(lo_d, hi_d, lo_n, hi_n, runs, str(rule), str(integrand), bool(sobol), seed,
                                     threads)
 
@@ -211,8 +211,8 @@ def study_importance(runs: int = 16, samples: int = 4096, sizes=(0.25, 1.0, 4.0)
     """
     runs = _studies_int("runs", runs, 2, 100000, "must be in [2, 100000] (a standard error needs 2 runs)")
     samples = _studies_int("samples", samples, 2, 2**30, "must be in [2, 2^30]")
-    threads = _studies_int("threads", threads, 1, 1024, "must be in [1, 1024]")
-    seed = _studies_int("seed", seed, 0, 2**64 - 1, "must be an integer in [0, 2^64)")
+    threads = _checks.threads(threads)
+    seed = _checks.seed(seed)
     return _stratum.study_importance(runs, samples, _studies_lengths("sizes", sizes),
                                      _studies_lengths("distances", distances), _studies_number("radiance", radiance),
                                      seed, threads)

@@ -197,7 +197,7 @@ def test_koksma_hlawka_with_a_given_star():
     (lambda: stratum.koksma_hlawka(np.empty((0, 2))), "n = 0"),
     (lambda: stratum.koksma_hlawka(np.empty((0, 2)), 0.1), "n = 0"),  # a given D* skips the star measure
     (lambda: stratum.koksma_hlawka(np.full((4, 2), 0.5), -0.1), r"star_discrepancy = -0.1"),
-    (lambda: stratum.star_discrepancy_box(np.full((4, 2), 0.5), threads=0), "threads = 0"),
+    (lambda: stratum.star_discrepancy_box(np.full((4, 2), 0.5), threads=-1), "threads = -1"),
     (lambda: stratum.koksma_hlawka(np.array([[0.5, 0.5]])), "n = 1"),
     (lambda: stratum.koksma_hlawka(np.array([[0.5, -0.1], [0.1, 0.2]])), r"point\[0\]\[1\] = -0.1"),
     (lambda: stratum.koksma_hlawka(np.full((4, 2), 0.5), 1.5), "star_discrepancy = 1.5"),

@@ -94,7 +94,7 @@ def test_non_contiguous_and_integer_input():
         (np.full((4, 5), 0.5), dict(name="l2-star", algorithm="fast"), ["algorithm = fast", "warnock"]),
         ([[0.1, 0.2], [0.3, 0.4]], dict(name="l2-star", algorithm="quick"), ["algorithm = quick", "auto"]),
         ([[0.1, 0.2], [0.3, 0.4]], dict(name="cd", lines=5), ["parameter = lines", "cd takes no parameters"]),
-        ([[0.1, 0.2], [0.3, 0.4]], dict(name="cd", threads=0), ["threads = 0"]),
+        ([[0.1, 0.2], [0.3, 0.4]], dict(name="cd", threads=-1), ["threads = -1"]),
         ([[0.1, 0.2], [0.3, 0.4]], dict(name=3), ["measure = 3"]),
         (np.zeros((2, 2, 2)), dict(name="cd"), ["shape (2, 2, 2)"]),
         ([["a", "b"], ["c", "d"]], dict(name="cd"), ["invalid x"]),

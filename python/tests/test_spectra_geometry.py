@@ -76,7 +76,7 @@ def test_spectrum_1d_and_bad_input():
     with pytest.raises(stratum.InvalidArgument, match=r"point\[1\]\[0\]"):
         stratum.spectrum(np.array([[0.1, 0.2], [np.nan, 0.3]]), max_frequency=4)
     with pytest.raises(stratum.InvalidArgument, match="invalid threads"):
-        stratum.spectrum(grid(4), max_frequency=4, threads=0)
+        stratum.spectrum(grid(4), max_frequency=4, threads=-1)
 
 
 def test_pair_correlation():

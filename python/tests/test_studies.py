@@ -117,7 +117,7 @@ def test_importance_study():
     (lambda: stratum.study_dimension(n="16:500"), "d = 9 has none"),
     (lambda: stratum.study_dimension(rule="simpson"), "invalid rule = simpson"),
     (lambda: stratum.study_dimension(integrand="nosuch"), "invalid integrand = nosuch"),
-    (lambda: stratum.study_dimension(threads=0), "invalid threads = 0"),
+    (lambda: stratum.study_dimension(threads=-1), "invalid threads = -1"),
     (lambda: stratum.study_importance(runs=0), "invalid runs = 0"),
     (lambda: stratum.study_importance(samples=1.5), "invalid samples"),
     (lambda: stratum.study_importance(sizes=[1, -1]), "invalid size = -1"),

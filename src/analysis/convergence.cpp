@@ -19,6 +19,7 @@
 #include "stratum/estimators/rqmc.hpp"
 #include "stratum/estimators/running_stats.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -85,16 +86,8 @@ std::uint64_t parse_count(std::string_view item, std::string_view whole) {
 }  // namespace
 
 SamplerChoice parse_sampler_choice(std::string_view text) {
-  SamplerChoice choice;
-  const std::size_t colon = text.find(':');
-  choice.name = std::string(text.substr(0, colon));
-  if (colon != std::string_view::npos) {
-    choice.randomize = std::string(text.substr(colon + 1));
-    require(!choice.randomize.empty(), "sampler", text, "write NAME or NAME:RANDOMIZER, e.g. sobol:owen");
-  }
-  require(!choice.name.empty(), "sampler", text.empty() ? "''" : std::string(text),
-          "write NAME or NAME:RANDOMIZER, e.g. sobol:owen");
-  return choice;
+  SamplerSpec spec = parse_sampler_spec(text);
+  return {std::move(spec.name), std::move(spec.randomize), std::move(spec.params)};
 }
 
 std::vector<std::uint64_t> parse_counts(std::string_view text) {

@@ -24,6 +24,7 @@
 #include "stratum/randomizers/base2.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/sequences/sobol.hpp"
+#include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/real.hpp"
 #include "support.hpp"
@@ -374,6 +375,35 @@ const ParamSpec order_param{
 
 void validate_order(const SamplerRequest& request) { parse_order(request); }
 
+/// zsobol's image (resolution) and pixel from the request; the points are
+/// the pixel's n = spp samples.
+struct ZSobolPixel {
+  ZSobol sampler;
+  std::uint32_t x = 0, y = 0;
+};
+ZSobolPixel zsobol_from(const SamplerRequest& request) {
+  const std::int64_t resolution = param_int(request, "resolution").value_or(1);
+  require(resolution >= 1 && resolution <= ZSobol::max_resolution, "resolution", resolution,
+          "must be in [1, 16384] (the image's larger side in pixels)");
+  std::vector<std::int64_t> pixel = param_int_list(request, "pixel").value_or(std::vector<std::int64_t>{0, 0});
+  require(pixel.size() == 2, "pixel", param_text(request, "pixel").value_or(""), "must be two integers x,y");
+  for (std::int64_t c : pixel)
+    require(c >= 0 && c < resolution, "pixel", std::to_string(pixel[0]) + "," + std::to_string(pixel[1]),
+            "must lie in the image: coordinates in [0, resolution = " + std::to_string(resolution) + ")");
+  return {ZSobol(static_cast<std::uint32_t>(resolution), *request.n, request.seed), static_cast<std::uint32_t>(pixel[0]),
+          static_cast<std::uint32_t>(pixel[1])};
+}
+
+PointSet generate_zsobol(const SamplerRequest& request) {
+  const ZSobolPixel z = zsobol_from(request);
+  std::vector<ZSobol::Pair> pairs;
+  for (unsigned p = 0; p < (request.d + 1) / 2; ++p) pairs.push_back(z.sampler.pair(p));
+  return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
+    const ZSobol::Pair& pair = pairs[j / 2];
+    return z.sampler.point(z.sampler.sequence_index(z.x, z.y, i, pair), pair)[j % 2];
+  });
+}
+
 }  // namespace
 
 std::vector<SamplerInfo> sobol() {
@@ -394,6 +424,25 @@ std::vector<SamplerInfo> sobol() {
       .validate = validate_order,
       .count = requested_count,
       .generate = generate_sobol,
+  });
+
+  list.push_back({
+      .name = "zsobol",
+      .kind = "pattern",
+      .description = "the spp samples of one pixel of a blue-noise-error image sampler (Ahmed & Wonka 2020; pbrt-v4's "
+                     "ZSobolSampler): one Owen-scrambled Sobol' sequence along a Morton curve over the pixels, each "
+                     "base-4 digit randomly permuted per dimension pair; render --sampler zsobol uses it per pixel",
+      .min_dim = 1,
+      .max_dim = 64,
+      .properties = {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
+                     "blue-noise error across pixels"},
+      .randomizers = {"owen-hash"},
+      .counts = "n = spp, a power of 2 up to 2^24",
+      .params = {{"pixel", "the pixel x,y whose samples these are", "0,0"},
+                 {"resolution", "the image's larger side in pixels (sets the Morton levels)", "1"}},
+      .validate = [](const SamplerRequest& request) { zsobol_from(request); },
+      .count = requested_count,
+      .generate = generate_zsobol,
   });
 
   list.push_back({

@@ -10,9 +10,11 @@
 #include <map>
 
 #include "image_plugin.hpp"
+#include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/io/json.hpp"
 #include "stratum/io/output_file.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -133,10 +135,22 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
                                "allowed keys are label, integrator, spp, light_samples, light_strategy, hemisphere, "
                                "sampler, randomize, time_pattern, max_depth, pixel_centers");
     }
+    // "sampler" is a spec (docs/samplers.md); "randomize" its :RANDOMIZER part, given once.
+    set_pixel_sampler(s.sampler, where + ".sampler", s.sampler.sampler, {}, s.sampler.randomize);
     validate_settings(s);
     result.push_back(std::move(config));
   }
   return result;
+}
+
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
+                       const std::vector<std::string>& params, const std::string& randomize) {
+  const SamplerSpec parsed = combine_sampler_options(spec, params, randomize);
+  if (!parsed.params.empty())
+    throw invalid_argument(argument, format_sampler_spec(parsed),
+                           "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
+  settings.sampler = parsed.name;
+  settings.randomize = parsed.randomize;
 }
 
 double mean_squared_error(const Image& image, const Image& reference) {
@@ -386,6 +400,23 @@ Image render_equal_time(const Accelerator& accelerator, const RenderSettings& se
   return total;
 }
 
+namespace {
+constexpr double luminance_weights[3] = {0.2126, 0.7152, 0.0722};  // Rec. 709 / sRGB primaries
+}  // namespace
+
+std::vector<double> luminance_error(const Image& image, const Image& reference) {
+  require(image.width == reference.width && image.height == reference.height, "reference",
+          std::to_string(reference.width) + "x" + std::to_string(reference.height),
+          "must have the image's size " + std::to_string(image.width) + "x" + std::to_string(image.height));
+  std::vector<double> error(std::size_t(image.width) * std::size_t(image.height));
+  for (std::size_t p = 0; p < error.size(); ++p) {
+    double e = 0;
+    for (int c = 0; c < 3; ++c) e += luminance_weights[c] * (image.rgb[3 * p + c] - reference.rgb[3 * p + c]);
+    error[p] = e;
+  }
+  return error;
+}
+
 std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
                                 std::uint32_t reference_spp, const std::string& cache_dir) {
   CompareOptions options;
@@ -441,6 +472,21 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
     row.relative_mse = relative_mean_squared_error(image, references[estimand]);
     row.seconds = image.seconds;
     row.efficiency = 1 / (row.mse * row.seconds);
+    if (image.width >= 4 && image.height >= 4) {
+      const std::vector<double> error = luminance_error(image, references[estimand]);
+      bool varies = false;  // a perfect render (zero error everywhere) has no spectrum
+      for (double e : error) varies = varies || e != error.front();
+      if (varies) {
+        const analysis::ImageSpectrum spectrum = analysis::image_spectrum(error, image.width, image.height);
+        row.low_frequency_power = spectrum.low_frequency_power;
+        row.error_radial_frequency = spectrum.radial_frequency;
+        row.error_radial_power = spectrum.radial_power;
+      } else {
+        row.low_frequency_power = std::numeric_limits<double>::quiet_NaN();
+      }
+    } else {
+      row.low_frequency_power = std::numeric_limits<double>::quiet_NaN();
+    }
     if (!options.variance_dir.empty()) {
       row.variance_path = variance_file[index]->path();
       write_variance_image(image, *variance_file[index]);

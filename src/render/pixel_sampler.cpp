@@ -1,6 +1,7 @@
 #include "stratum/render/pixel_sampler.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "halton_digits.hpp"
 
@@ -64,6 +65,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   if (halton_permute_)
     for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
+  if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, settings_.seed);
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
@@ -72,6 +74,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
   halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
+  zsobol_ = other.zsobol_, zsobol_pairs_ = other.zsobol_pairs_;
 }
 
 void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set,
@@ -177,6 +180,7 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     const std::uint64_t key = hash64(settings_.seed, tag_pixel, x, y);
     pixel_key_ = key, pixel_x_ = x, pixel_y_ = y;
     first_pixel_ = false;
+    ++pixel_stamp_;  // zsobol's per-pixel digits are stale
     pixel_mix_ = hash64(key);
     array_mix_ = hash64_extend(pixel_mix_, tag_array);
     dimension_valid_ = array_valid_ = 0;
@@ -196,6 +200,11 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
 }
 
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
+  if (zsobol_) {
+    const std::uint32_t dimension = dimension_++;
+    const std::uint64_t sequence = zsobol_index(dimension);  // before the pair: it may add the pair
+    return zsobol_->point(sequence, zsobol_pairs_[dimension]);
+  }
   if (halton_direct_) {
     const std::uint32_t dimension = dimension_++;
     if (halton_sets_.size() <= dimension) halton_sets_.resize(dimension + 1);
@@ -207,7 +216,14 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
   return {set(index_, 0), set(index_, 1)};
 }
 
-void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t n, std::array<double, 2>* out) {
+void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n,
+                                     std::array<double, 2>* out) {
+  if (zsobol_ && std::has_single_bit(n)) {  // other counts: the registry names the bad count below
+    const std::uint64_t sequence = zsobol_index(dimension);
+    const auto k = static_cast<unsigned>(std::countr_zero(n));
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = zsobol_->array_point(sequence, k, i, zsobol_pairs_[dimension]);
+    return;
+  }
   if (halton_permute_ && n <= halton_direct_max) {
     HaltonSet set;
     build_halton_set(seed, n, set);

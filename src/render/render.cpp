@@ -47,7 +47,11 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
                   const std::function<void(std::uint32_t, std::uint32_t, double)>& progress,
                   const std::atomic<bool>* stop) {
   const Scene& scene = accelerator.scene();
-  const PixelSampler prototype{settings.sampler};  // one per tile is copied from it
+  const PixelSampler prototype = [&] {  // one per tile is copied from it
+    PixelSamplerSettings sampler = settings.sampler;
+    sampler.resolution = std::uint32_t(std::max(scene.camera.width, scene.camera.height));
+    return PixelSampler(std::move(sampler));
+  }();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   const CameraModel camera(scene.camera);
   const Integrator integrator(scene, accelerator, settings);

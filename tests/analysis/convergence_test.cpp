@@ -57,6 +57,12 @@ TEST(Convergence, ParseSamplerChoice) {
   EXPECT_EQ(owen.randomize, "owen");
   EXPECT_THROW(parse_sampler_choice("sobol:"), invalid_argument);
   EXPECT_THROW(parse_sampler_choice(":owen"), invalid_argument);
+  // The spec grammar, with parameters (registry/spec.hpp).
+  const auto strata = parse_sampler_choice("jittered(strata=4x8)");
+  EXPECT_EQ(strata.name, "jittered");
+  EXPECT_EQ(strata.params, (std::map<std::string, std::string>{{"strata", "4x8"}}));
+  EXPECT_NE(error_of([] { parse_sampler_choice("halton:owen-hash"); }).find("invalid sampler = halton:owen-hash"),
+            std::string::npos);
 }
 
 /// Runs one sampler on one integrand over `counts` with R runs and checks the
@@ -193,9 +199,9 @@ TEST(Convergence, BadInput) {
   request.runs = 1;
   EXPECT_NE(error_of([&] { run_convergence(request); }).find("invalid runs = 1"), std::string::npos);
   request.runs = 4;
-  request.samplers = {parse_sampler_choice("nosuch")};
+  request.samplers = {SamplerChoice{"nosuch", "", {}}};  // run_convergence checks what a caller builds by hand
   EXPECT_NE(error_of([&] { run_convergence(request); }).find("invalid sampler = nosuch"), std::string::npos);
-  request.samplers = {parse_sampler_choice("halton:owen-hash")};
+  request.samplers = {SamplerChoice{"halton", "owen-hash", {}}};
   EXPECT_NE(error_of([&] { run_convergence(request); }).find("invalid randomize = owen-hash"), std::string::npos);
   request.samplers = {};
   EXPECT_NE(error_of([&] { run_convergence(request); }).find("invalid samplers"), std::string::npos);

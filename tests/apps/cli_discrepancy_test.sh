@@ -54,18 +54,18 @@ grep -q '^edge ' "$tmp/all.txt" && fail "edge (2D only) listed for d = 3" || ok
 "$stratum" discrepancy --sampler halton -n 64 -d 2 --measure all >"$tmp/all2.txt" || fail "all 2D"
 for name in l2-star cd star; do grep -q "^$name " "$tmp/all2.txt" && ok || fail "2D all lacks $name"; done
 
-# A -p that one measure rejects for this d: that measure is skipped with the reason, the others still print.
-"$stratum" discrepancy "$tmp/x.txt" --measure all -p algorithm=fast >"$tmp/skip.txt" || fail "all with algorithm=fast"
+# A --measure-param that one measure rejects for this d: that measure is skipped with the reason, the others still print.
+"$stratum" discrepancy "$tmp/x.txt" --measure all --measure-param algorithm=fast >"$tmp/skip.txt" || fail "all with algorithm=fast"
 grep -q '^l2-star  *[0-9]' "$tmp/skip.txt" && ok || fail "l2-star fast runs for d = 3"
 $py -c "
 import numpy as np; np.save('$tmp/x5.npy', np.random.default_rng(1).random((20, 5)))"
-"$stratum" discrepancy "$tmp/x5.npy" --measure all -p algorithm=fast >"$tmp/skip5.txt" || fail "all d = 5"
+"$stratum" discrepancy "$tmp/x5.npy" --measure all --measure-param algorithm=fast >"$tmp/skip5.txt" || fail "all d = 5"
 grep -q '^l2-star  *skipped: invalid algorithm = fast' "$tmp/skip5.txt" && ok || fail "l2-star skipped: $(cat "$tmp/skip5.txt")"
 grep -q '^cd  *[0-9]' "$tmp/skip5.txt" && ok || fail "cd still printed after a skip"
 
 # The fast L2-star algorithm and Warnock's agree (to 1e-10 relative) through the CLI.
-"$stratum" discrepancy --sampler random -n 3000 -d 2 --seed 9 --measure l2-star -p algorithm=fast --json >"$tmp/f.json"
-"$stratum" discrepancy --sampler random -n 3000 -d 2 --seed 9 --measure l2-star -p algorithm=warnock --json >"$tmp/w.json"
+"$stratum" discrepancy --sampler random -n 3000 -d 2 --seed 9 --measure l2-star --measure-param algorithm=fast --json >"$tmp/f.json"
+"$stratum" discrepancy --sampler random -n 3000 -d 2 --seed 9 --measure l2-star --measure-param algorithm=warnock --json >"$tmp/w.json"
 $py -c "
 import json; f=json.load(open('$tmp/f.json'))['measures'][0]['value']; w=json.load(open('$tmp/w.json'))['measures'][0]['value']
 assert abs(f - w) <= 1e-10 * w, (f, w)" && ok || fail "fast and warnock differ"
@@ -112,16 +112,16 @@ expect_error "cannot be opened" discrepancy "$tmp/missing.txt" --measure cd
 expect_error "invalid measure = nosuch" discrepancy "$tmp/x.txt" --measure nosuch
 expect_error "l2-star, cd" discrepancy "$tmp/x.txt" --measure nosuch
 expect_error "edge is defined for d in \[2, 2\]" discrepancy "$tmp/x.txt" --measure edge
-expect_error "invalid algorithm = fast" discrepancy "$tmp/x5.npy" --measure l2-star -p algorithm=fast
-expect_error "invalid algorithm = quick" discrepancy "$tmp/x.txt" --measure l2-star -p algorithm=quick
-expect_error "invalid parameter = lines" discrepancy "$tmp/x.txt" --measure cd -p lines=5
-expect_error "invalid param = bogus" discrepancy "$tmp/x.txt" --measure all -p bogus=1
-expect_error "invalid param = lines" discrepancy "$tmp/x.txt" --measure cd -p lines
+expect_error "invalid algorithm = fast" discrepancy "$tmp/x5.npy" --measure l2-star --measure-param algorithm=fast
+expect_error "invalid algorithm = quick" discrepancy "$tmp/x.txt" --measure l2-star --measure-param algorithm=quick
+expect_error "invalid parameter = lines" discrepancy "$tmp/x.txt" --measure cd --measure-param lines=5
+expect_error "invalid measure-param = bogus" discrepancy "$tmp/x.txt" --measure all --measure-param bogus=1
+expect_error "invalid measure-param = lines" discrepancy "$tmp/x.txt" --measure cd --measure-param lines
 expect_error "invalid input" discrepancy --measure cd
 expect_error "invalid input" discrepancy "$tmp/x.txt" --sampler halton -n 4 --measure cd
 expect_error "invalid n" discrepancy --sampler halton --measure cd
 expect_error "invalid -n/-d" discrepancy "$tmp/x.txt" -n 5 --measure cd
-expect_error "invalid threads = 0" discrepancy "$tmp/x.txt" --measure cd --threads 0
+expect_error "invalid threads = -1" discrepancy "$tmp/x.txt" --measure cd --threads -1
 expect_error "sampler" discrepancy --sampler nosuch -n 4 --measure cd
 expect_error "measure" discrepancy "$tmp/x.txt"
 

@@ -15,7 +15,7 @@ py=/usr/bin/python3
 $py -c "import json; r=json.load(open('$tmp/i.json')); assert r['exact']==0.5 and r['runs']==8 and len(r['run_estimates'])==8; assert abs(r['error'])<5.4*r['standard_error'], r; assert r['randomize']=='owen'" \
   && ok || fail "integrate disk values"
 # Genz Gaussian in d = 3 with parameters: one random point set, z-test at 4 standard errors.
-"$stratum" integrate --integrand genz-gaussian -d 3 -p a=2,3,4 -p u=0.2 --sampler random -n 20000 --seed 5 --json >"$tmp/g.json" \
+"$stratum" integrate --integrand genz-gaussian -d 3 --integrand-param a=2,3,4 --integrand-param u=0.2 --sampler random -n 20000 --seed 5 --json >"$tmp/g.json" \
   && ok || fail "integrate genz-gaussian"
 $py -c "
 import json, math
@@ -47,8 +47,8 @@ expect_error "invalid n = (missing)" integrate --integrand disk
 expect_error "invalid integrand = nosuch" integrate --integrand nosuch -n 10
 expect_error "invalid sampler = nosuch" integrate --integrand disk --sampler nosuch -n 10
 expect_error "invalid d = 3" integrate --integrand disk -n 10 -d 3
-expect_error "invalid a = x" integrate --integrand genz-gaussian -n 10 -p a=x
-expect_error "invalid parameter = bogus" integrate --integrand genz-gaussian -n 10 -p bogus=1
+expect_error "invalid a = x" integrate --integrand genz-gaussian -n 10 --integrand-param a=x
+expect_error "invalid parameter = bogus" integrate --integrand genz-gaussian -n 10 --integrand-param bogus=1
 expect_error "invalid randomize = owen" integrate --integrand disk --sampler random --randomize owen -n 10
 expect_error "invalid runs = 0" integrate --integrand disk -n 10 --runs 0
 expect_error "invalid n = 16:100" converge --integrand disk --samplers random --n 16:100
@@ -59,7 +59,7 @@ expect_error "invalid n = 32: equal strata" converge --integrand disk --samplers
 expect_error "invalid runs = 1" converge --integrand disk --samplers random --runs 1
 expect_error "invalid sampler = nosuch" converge --integrand disk --samplers random,nosuch
 expect_error "invalid integrand = nosuch" converge --integrand nosuch --samplers random
-expect_error "invalid threads = 0" converge --integrand disk --samplers random --threads 0
+expect_error "invalid threads = 1025" converge --integrand disk --samplers random --threads 1025
 expect_error "plot" converge --integrand disk --samplers random --n 16:64 --runs 4 --plot /nonexistent/c.png
 [ ! -e /nonexistent/c.png ] && ok || fail "partial plot left"
 if [ "$(id -u)" != 0 ]; then

@@ -125,5 +125,5 @@ bad "invalid point\[0\]\[1\] = 1.5" koksma-hlawka "$tmp/out.txt"
 bad "input" koksma-hlawka
 bad "invalid --list" koksma-hlawka --list "$tmp/one.txt"
 bad "invalid --list" koksma-hlawka --list --star 0.1
-bad "threads" koksma-hlawka --sampler halton -n 16 --threads 0
+bad "threads" koksma-hlawka --sampler halton -n 16 --threads -1
 finish

@@ -86,7 +86,7 @@ expect_error "invalid d = 1" local-discrepancy --sampler halton -n 16 -d 1 --box
 # The box sweep is O(N^2): --box takes at most 20000 points, as the star-box measure does.
 expect_error "invalid n = 20001: .*at most 20000" local-discrepancy --sampler random -n 20001 --box -o "$tmp/bad.npy"
 expect_error "invalid d = 3" discrepancy --sampler halton -n 16 -d 3 -m star-box
-expect_error "param" discrepancy --sampler halton -n 16 -m koksma-hlawka -p x=1
+expect_error "param" discrepancy --sampler halton -n 16 -m koksma-hlawka --measure-param x=1
 # Neither the file nor a temporary beside it.
 [ -z "$(ls -A "$tmp" | grep 'bad')" ] && ok || fail "a failed run left $(ls -A "$tmp" | grep 'bad')"
 finish

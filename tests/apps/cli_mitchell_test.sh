@@ -15,7 +15,7 @@ $py -c "import json; m=json.load(open('$tmp/centre.json'))['measures'][0]; asser
 
 # Random-edge: RMS, mean and max, max <= exact, deterministic across threads and seeded.
 "$stratum" discrepancy --sampler jittered -n 256 -d 2 --seed 2 --measure edge --json >"$tmp/exact.json" && ok || fail "edge json"
-"$stratum" discrepancy --sampler jittered -n 256 -d 2 --seed 2 --measure edge-random -p lines=4000 -p seed=9 --json \
+"$stratum" discrepancy --sampler jittered -n 256 -d 2 --seed 2 --measure edge-random --measure-param lines=4000 --measure-param seed=9 --json \
   >"$tmp/random.json" && ok || fail "edge-random json"
 $py - "$tmp/exact.json" "$tmp/random.json" <<'PY' && ok || fail "edge-random extras and bound"
 import json, sys
@@ -24,19 +24,19 @@ random = json.load(open(sys.argv[2]))["measures"][0]
 assert random["kind"] == "estimate" and random["extras"]["lines"] == 4000, random
 assert random["extras"]["mean"] <= random["value"] <= random["extras"]["max"] <= exact["value"] + 1e-12, (random, exact)
 PY
-a=$("$stratum" discrepancy --sampler random -n 500 -d 2 --measure edge-random -p lines=3000 --threads 1)
-b=$("$stratum" discrepancy --sampler random -n 500 -d 2 --measure edge-random -p lines=3000 --threads 2)
+a=$("$stratum" discrepancy --sampler random -n 500 -d 2 --measure edge-random --measure-param lines=3000 --threads 1)
+b=$("$stratum" discrepancy --sampler random -n 500 -d 2 --measure edge-random --measure-param lines=3000 --threads 2)
 [ "$a" = "$b" ] && ok || fail "threads change edge-random: $a / $b"
-c=$("$stratum" discrepancy --sampler random -n 500 -d 2 --measure edge-random -p lines=3000 -p seed=1)
+c=$("$stratum" discrepancy --sampler random -n 500 -d 2 --measure edge-random --measure-param lines=3000 --measure-param seed=1)
 [ "$a" != "$c" ] && ok || fail "the seed of the lines changes nothing"
 
 expect_error "invalid d = 3" discrepancy --sampler random -n 10 -d 3 --measure edge
 expect_error "invalid d = 1" discrepancy --sampler random -n 10 -d 1 --measure edge-random
-expect_error "invalid lines = 0" discrepancy --sampler random -n 10 -d 2 --measure edge-random -p lines=0
-expect_error "invalid lines = -4" discrepancy --sampler random -n 10 -d 2 --measure edge-random -p lines=-4
-expect_error "invalid lines = many" discrepancy --sampler random -n 10 -d 2 --measure edge-random -p lines=many
-expect_error "invalid seed = -1" discrepancy --sampler random -n 10 -d 2 --measure edge-random -p seed=-1
-expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 -d 2 --measure edge -p lines=5
+expect_error "invalid lines = 0" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param lines=0
+expect_error "invalid lines = -4" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param lines=-4
+expect_error "invalid lines = many" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param lines=many
+expect_error "invalid seed = -1" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param seed=-1
+expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 -d 2 --measure edge --measure-param lines=5
 printf '0.5 0.5\n0.2 1.5\n' >"$tmp/outside.txt"
 expect_error "point\[1\]\[1\]" discrepancy "$tmp/outside.txt" --measure edge
 

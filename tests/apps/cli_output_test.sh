@@ -97,8 +97,8 @@ expect_input_refused() {  # expect_input_refused args...: exit 2 within the time
   [ "$status" = 2 ] && grep -q "regular file" "$tmp/err" && ok || fail "'$*': exit $status: $(cat "$tmp/err")"
 }
 expect_input_refused discrepancy "$tmp/in.fifo" --measure cd
-expect_input_refused warp --map triangle -n 4 -p "vertices=@$tmp/in.fifo"
-expect_error "invalid vertices = /nonexistent/v.txt: does not exist" warp --map triangle -n 4 -p vertices=@/nonexistent/v.txt
+expect_input_refused warp --map triangle -n 4 --warp-param "vertices=@$tmp/in.fifo"
+expect_error "invalid vertices = /nonexistent/v.txt: does not exist" warp --map triangle -n 4 --warp-param vertices=@/nonexistent/v.txt
 
 if has_render; then
   # --- render: outputs checked before the work, all or none ----------------------------

@@ -71,9 +71,9 @@ v=$("$stratum" discrepancy --sampler n-rooks -n 50 -d 3 --measure latin --json |
 [ "$v" = 1 ] && ok || fail "n-rooks is Latin, got $v"
 v=$("$stratum" discrepancy --sampler grid -n 64 -d 2 --measure min-distance --json | $py -c 'import json,sys; print(json.load(sys.stdin)["measures"][0]["value"])')
 [ "$v" = 0.125 ] && ok || fail "grid min distance 1/8, got $v"
-expect_error "invalid base = 1" discrepancy --sampler sobol -n 256 -d 2 --measure t-value -p base=1
+expect_error "invalid base = 1" discrepancy --sampler sobol -n 256 -d 2 --measure t-value --measure-param base=1
 expect_error "invalid n = 100" discrepancy --sampler sobol -n 100 -d 2 --measure t-value
-expect_error "invalid toroidal = 2" discrepancy --sampler random -n 10 -d 2 --measure min-distance -p toroidal=2
+expect_error "invalid toroidal = 2" discrepancy --sampler random -n 10 -d 2 --measure min-distance --measure-param toroidal=2
 
 # Bad input to spectrum.
 expect_error "invalid max-frequency = 0" spectrum --sampler random -n 100 -k 0
@@ -91,5 +91,32 @@ printf '0.1 0.2\n0.3 1.5\n' >"$tmp/out.txt"
 expect_error "point\[1\]\[1\]" spectrum "$tmp/out.txt"
 expect_error "invalid max-frequency = 0" spectrum --sampler random -n 100 -k 0 -o "$tmp/bad.png"
 [ ! -e "$tmp/bad.png" ] && ok || fail "a failed run left bad.png"
+
+# --- spectrum --image: where a render's error goes ------------------------------------------
+scene="$(dirname "${BASH_SOURCE[0]}")/../../scenes/penumbra.json"
+"$stratum" render "$scene" --width 64 --height 64 --spp 256 --sampler sobol --seed 9 --quiet -o "$tmp/ref.png" --exr "$tmp/ref.exr" \
+  && ok || fail "reference render"
+for s in sobol zsobol; do
+  "$stratum" render "$scene" --width 64 --height 64 --spp 1 --sampler $s --seed 1 --quiet -o "$tmp/$s.png" --exr "$tmp/$s.exr" \
+    && ok || fail "render $s"
+  "$stratum" spectrum --image "$tmp/$s.exr" --reference "$tmp/ref.exr" --json >"$tmp/$s.json" && ok || fail "spectrum --image $s"
+done
+/usr/bin/python3 - "$tmp/sobol.json" "$tmp/zsobol.json" <<'EOF' && ok || fail "image spectra: $(head -c 300 "$tmp/zsobol.json")"
+import json, sys
+white, blue = (json.load(open(p)) for p in sys.argv[1:3])
+assert blue["width"] == 64 and blue["height"] == 64 and len(blue["radial"]["power"]) == 32, blue.keys()
+assert abs(blue["radial"]["frequency"][-1] - 0.5) < 1e-12
+# one seed each: sobol's low-frequency power scatters with sd ~0.16 around 1.09, zsobol's ~0.04 around 0.25
+assert white["low_frequency_power"] > 0.6 and blue["low_frequency_power"] < 0.45, (white["low_frequency_power"], blue["low_frequency_power"])
+EOF
+"$stratum" spectrum --image "$tmp/zsobol.exr" >"$tmp/text" && grep -q "^low_frequency_power" "$tmp/text" && ok \
+  || fail "spectrum --image text: $(head -3 "$tmp/text")"
+"$stratum" render "$scene" --width 32 --height 64 --spp 1 --quiet -o "$tmp/small.png" --exr "$tmp/small.exr"
+expect_error "must have the image's size 64x64" spectrum --image "$tmp/zsobol.exr" --reference "$tmp/small.exr"
+expect_error "measures an image alone" spectrum --image "$tmp/zsobol.exr" -s random -n 16
+expect_error "applies only to --image" spectrum -s random -n 16 --reference "$tmp/ref.exr"
+expect_error "for --image use --json" spectrum --image "$tmp/zsobol.exr" -o "$tmp/fig.png"
+[ ! -e "$tmp/fig.png" ] && ok || fail "a refused --image run wrote its figure"
+expect_error "no-such.exr" spectrum --image "$tmp/no-such.exr"
 
 finish

@@ -35,7 +35,7 @@ EOF
 
 # Bounds bracket the exact value; auto falls back to bounds beyond the exact limit.
 exact=$("$stratum" discrepancy --sampler random -n 300 -d 3 --seed 4 --measure star --json)
-bounds=$("$stratum" discrepancy --sampler random -n 300 -d 3 --seed 4 --measure star -p method=bounds -p delta=0.05 --json)
+bounds=$("$stratum" discrepancy --sampler random -n 300 -d 3 --seed 4 --measure star --measure-param method=bounds --measure-param delta=0.05 --json)
 $py - "$exact" "$bounds" <<'EOF' && ok || fail "bounds bracket the exact value"
 import json, sys
 e = json.loads(sys.argv[1])["measures"][0]
@@ -53,12 +53,12 @@ b=$("$stratum" discrepancy --sampler random -n 5000 -d 2 --seed 2 --measure star
 [ "$a" = "$b" ] && ok || fail "threads change the star discrepancy: $a vs $b"
 
 # Bad input.
-expect_error "invalid d = 7" discrepancy --sampler random -n 300 -d 7 --measure star -p method=exact
-expect_error "method=bounds" discrepancy --sampler random -n 300 -d 7 --measure star -p method=exact
-expect_error "invalid method = fast" discrepancy --sampler random -n 10 --measure star -p method=fast
-expect_error "invalid delta = 2" discrepancy --sampler random -n 10 --measure star -p method=bounds -p delta=2
-expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 --measure star -p lines=5
-expect_error "invalid max_boxes = 0" discrepancy --sampler random -n 10 --measure star -p max_boxes=0
+expect_error "invalid d = 7" discrepancy --sampler random -n 300 -d 7 --measure star --measure-param method=exact
+expect_error "method=bounds" discrepancy --sampler random -n 300 -d 7 --measure star --measure-param method=exact
+expect_error "invalid method = fast" discrepancy --sampler random -n 10 --measure star --measure-param method=fast
+expect_error "invalid delta = 2" discrepancy --sampler random -n 10 --measure star --measure-param method=bounds --measure-param delta=2
+expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 --measure star --measure-param lines=5
+expect_error "invalid max_boxes = 0" discrepancy --sampler random -n 10 --measure star --measure-param max_boxes=0
 printf '0.5 0.5\n' >"$tmp/one.txt"
 expect_error "invalid n = 1" discrepancy "$tmp/one.txt" --measure star
 printf '0.5 0.5\n0.25 1.5\n' >"$tmp/out.txt"

@@ -10,9 +10,9 @@ py=/usr/bin/python3
 # Every listed warp with its example parameters writes n rows; output_dim + 1 columns.
 example() {
   case $1 in
-    piecewise-1d) echo "-p values=1,3,0.5,2 -p width=4" ;;
-    piecewise-2d) echo "-p values=1,2,3,4,5,6 -p width=3 -p height=2" ;;
-    alias) echo "-p values=1,3,0.5,2" ;;
+    piecewise-1d) echo "--warp-param values=1,3,0.5,2 --warp-param width=4" ;;
+    piecewise-2d) echo "--warp-param values=1,2,3,4,5,6 --warp-param width=3 --warp-param height=2" ;;
+    alias) echo "--warp-param values=1,3,0.5,2" ;;
   esac
 }
 for map in $("$stratum" warp --list | grep -v '^ ' | awk '{print $1}'); do
@@ -33,15 +33,15 @@ assert np.allclose((a[:, :3] ** 2).sum(1), 1)" && ok || fail "hemisphere rows"
 "$stratum" warp --map disk-polar -n 300 --sampler sobol --seed 4 | $py -c "
 import sys, numpy as np; a = np.loadtxt(sys.stdin); assert a.shape == (300, 3)
 assert np.all((a[:, :2] ** 2).sum(1) <= 1) and np.allclose(a[:, 2], 1 / np.pi)" && ok || fail "disk rows"
-"$stratum" warp --map cone -n 300 -p cos_theta_max=0.8 | $py -c "
+"$stratum" warp --map cone -n 300 --warp-param cos_theta_max=0.8 | $py -c "
 import sys, numpy as np; a = np.loadtxt(sys.stdin); assert np.all(a[:, 2] >= 0.8 - 1e-12)
 assert np.allclose(a[:, 3], 1 / (2 * np.pi * 0.2))" && ok || fail "cone rows"
 # 1D warps draw 1D input; a 3×3 triangle returns points in space; @FILE parameters.
-"$stratum" warp --map normal -n 2000 -p mu=3 -p sigma=0.5 | $py -c "
+"$stratum" warp --map normal -n 2000 --warp-param mu=3 --warp-param sigma=0.5 | $py -c "
 import sys, numpy as np; a = np.loadtxt(sys.stdin); assert a.shape == (2000, 2)
 assert abs(a[:, 0].mean() - 3) < 5 * 0.5 / np.sqrt(2000), a[:, 0].mean()" && ok || fail "normal rows"
 printf '0 0 0\n1 0 0\n0 2 0\n' > "$tmp/v.txt"
-"$stratum" warp --map triangle -n 100 -p vertices=@"$tmp/v.txt" | $py -c "
+"$stratum" warp --map triangle -n 100 --warp-param vertices=@"$tmp/v.txt" | $py -c "
 import sys, numpy as np; a = np.loadtxt(sys.stdin); assert a.shape == (100, 4)
 assert np.all(a[:, 2] == 0) and np.allclose(a[:, 3], 1.0)" && ok || fail "triangle from @FILE"
 # Same seed, same output; another seed, another output.
@@ -53,22 +53,22 @@ c=$("$stratum" warp --map sphere-uniform -n 50 --seed 8 | md5sum)
 expect_error "invalid map = nosuch: valid maps are disk-polar" warp --map nosuch -n 4
 expect_error "invalid n = 0" warp --map disk-polar -n 0
 expect_error "invalid n = -2" warp --map disk-polar -n -2
-expect_error "invalid cos_theta_max = 1.5" warp --map cone -n 4 -p cos_theta_max=1.5
-expect_error "invalid cos_theta_max = -2" warp --map cone -n 4 -p cos_theta_max=-2
-expect_error "invalid vertices" warp --map triangle -n 4 -p vertices=0,0,1,1,2,2
-expect_error "invalid radius = 0" warp --map tent -n 4 -p radius=0
-expect_error "invalid rate = -1" warp --map exponential -n 4 -p rate=-1
-expect_error "invalid sigma = 0" warp --map normal -n 4 -p sigma=0
-expect_error "invalid a = -1" warp --map linear -n 4 -p a=-1
-expect_error "not both be zero" warp --map linear -n 4 -p a=0 -p b=0
-expect_error "invalid weights" warp --map bilinear -n 4 -p weights=0,0,0,0
-expect_error "invalid parameter = radius" warp --map disk-polar -n 4 -p radius=1
-expect_error "invalid cos_theta_max = x: must be a number" warp --map cone -n 4 -p cos_theta_max=x
-expect_error "invalid param = 0.5" warp --map cone -n 4 -p 0.5
-expect_error "invalid vertices = /nonexistent/v.txt: does not exist" warp --map triangle -n 4 -p vertices=@/nonexistent/v.txt
+expect_error "invalid cos_theta_max = 1.5" warp --map cone -n 4 --warp-param cos_theta_max=1.5
+expect_error "invalid cos_theta_max = -2" warp --map cone -n 4 --warp-param cos_theta_max=-2
+expect_error "invalid vertices" warp --map triangle -n 4 --warp-param vertices=0,0,1,1,2,2
+expect_error "invalid radius = 0" warp --map tent -n 4 --warp-param radius=0
+expect_error "invalid rate = -1" warp --map exponential -n 4 --warp-param rate=-1
+expect_error "invalid sigma = 0" warp --map normal -n 4 --warp-param sigma=0
+expect_error "invalid a = -1" warp --map linear -n 4 --warp-param a=-1
+expect_error "not both be zero" warp --map linear -n 4 --warp-param a=0 --warp-param b=0
+expect_error "invalid weights" warp --map bilinear -n 4 --warp-param weights=0,0,0,0
+expect_error "invalid parameter = radius" warp --map disk-polar -n 4 --warp-param radius=1
+expect_error "invalid cos_theta_max = x: must be a number" warp --map cone -n 4 --warp-param cos_theta_max=x
+expect_error "invalid warp-param = 0.5" warp --map cone -n 4 --warp-param 0.5
+expect_error "invalid vertices = /nonexistent/v.txt: does not exist" warp --map triangle -n 4 --warp-param vertices=@/nonexistent/v.txt
 expect_error "sampler" warp --map disk-polar -n 4 --sampler nosuch
 expect_error "format" warp --map disk-polar -n 4 --format xls
-expect_error "invalid cos_theta_max = 3" warp --map cone -n 4 -p cos_theta_max=3 -o "$tmp/bad.txt"
+expect_error "invalid cos_theta_max = 3" warp --map cone -n 4 --warp-param cos_theta_max=3 -o "$tmp/bad.txt"
 [ ! -e "$tmp/bad.txt" ] && ok || fail "partial file left after bad parameter"
 expect_error "output" warp --map disk-polar -n 4 -o /nonexistent/x.txt
 [ -z "$(ls -A "$tmp" | grep -v -e '^out$' -e '^err$' -e '^w\.npy$' -e '^h\.csv$' -e '^v\.txt$')" ] && ok || fail "stray files: $(ls -A "$tmp")"

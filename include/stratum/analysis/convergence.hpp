@@ -29,7 +29,8 @@ struct SamplerChoice {
   std::map<std::string, std::string> params;  ///< sampler parameters, as text
 };
 
-/// Parses "sobol" or "sobol:owen" (name[:randomizer]).
+/// Parses a sampler spec NAME[(KEY=VALUE,...)][:RANDOMIZER] ("sobol:owen",
+/// "jittered(strata=4x8)") through parse_sampler_spec (registry/spec.hpp).
 SamplerChoice parse_sampler_choice(std::string_view text);
 
 /// The integrand part of a request.

@@ -22,6 +22,12 @@ struct CompareRow {
   double mse = 0, relative_mse = 0, seconds = 0, efficiency = 0;
   double mse_ratio = 1, efficiency_ratio = 1;  ///< baseline / this for MSE; this / baseline for efficiency
   std::uint32_t passes = 1;    ///< equal time: independent renders averaged (1 at equal samples)
+  /// Where the error goes (analysis/image_spectrum.hpp): the power spectrum
+  /// of the luminance of render − reference, normalized so white noise is 1;
+  /// low_frequency_power is its mean below a quarter of Nyquist (< 1: blue
+  /// noise). NaN and empty for images under 4 pixels a side.
+  double low_frequency_power = 0;
+  std::vector<double> error_radial_frequency, error_radial_power;
   std::string variance_path;   ///< where its variance image was written (CompareOptions::variance_dir)
 };
 
@@ -55,6 +61,13 @@ std::vector<CompareConfig> builtin_comparison(const std::string& name, unsigned 
 /// "light_samples": ..., "light_strategy": ..., "hemisphere": ...,
 /// "sampler": ..., "randomize": ..., "time_pattern": ..., "max_depth": ...}, ...]
 std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned threads, std::uint64_t seed);
+
+/// Sets the pixel sampler's name and randomizer from a sampler spec
+/// (docs/samplers.md) with -p items and a separate randomizer folded in
+/// (combine_sampler_options); `argument` names the spec in errors. The pixel
+/// sampler takes no sampler parameters, so a spec with some is refused.
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
+                       const std::vector<std::string>& params, const std::string& randomize);
 
 /// The converged reference for `settings`' estimand (integrator, depth,
 /// scene, resolution): loaded from `cache_dir` when there, else rendered
@@ -115,6 +128,9 @@ void write_variance_image(const Image& image, const std::string& path);
 /// The same into a prepared output's staging file (the caller commits).
 void write_variance_image(const Image& image, io::OutputFile& file);
 void check_variance_path(const std::string& argument, const std::string& path);
+
+/// The luminance (Rec. 709 weights) of image − reference, per pixel, row-major.
+std::vector<double> luminance_error(const Image& image, const Image& reference);
 
 /// A fingerprint of everything in a scene that changes its image (camera,
 /// materials, every shape's numbers and mesh, lights), as 16 hex digits:

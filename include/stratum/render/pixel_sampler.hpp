@@ -32,6 +32,7 @@
 /// and cache it.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,7 @@
 #include "stratum/registry.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/sequences/sobol.hpp"
+#include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/hash.hpp"
 
 namespace stratum::render {
@@ -50,6 +52,9 @@ struct PixelSamplerSettings {
   std::uint64_t seed = 0;
   std::uint32_t spp = 16;   ///< samples per pixel
   std::string time_pattern;  ///< "", "random", "cook" or "magic-square"
+  /// The image's larger side in pixels (render() sets it): zsobol orders the
+  /// pixels along a Morton curve of this size. 0: one pixel.
+  std::uint32_t resolution = 0;
 };
 
 class PixelSampler {
@@ -98,7 +103,7 @@ class PixelSampler {
       case Fast::pmj02: return keyed_points<Fast::pmj02>(set_key(seed), array_root_, n, out);
       case Fast::none: break;
     }
-    get_2d_array_slow(seed, n, out);
+    get_2d_array_slow(seed, dimension_ - 1, n, out);
   }
 
   /// Point set `dimension` of a pixel, as drawn (for tests): the registry's
@@ -122,7 +127,27 @@ class PixelSampler {
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed) const;
   /// get_2d off the direct paths; `coordinates` 1: only the first is used.
   std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
-  void get_2d_array_slow(std::uint64_t seed, std::uint32_t n, std::array<double, 2>* out);
+  void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::array<double, 2>* out);
+
+  /// zsobol (sequences/zsobol.hpp): one sequence over the image, so the
+  /// draws need the pixel and the image size, not a per-pixel set; the
+  /// pairs' keys depend on (seed, dimension) only and are derived once.
+  std::optional<ZSobol> zsobol_;
+  std::vector<ZSobol::Pair> zsobol_pairs_;
+  /// Per dimension: the pixel's permuted digits, valid when its stamp is this pixel's.
+  std::vector<std::uint64_t> zsobol_pixel_digits_, zsobol_stamps_;
+  std::uint64_t pixel_stamp_ = 0;
+  /// The sequence index of this pixel's current sample in `dimension`'s pair.
+  std::uint64_t zsobol_index(std::uint32_t dimension) {
+    while (zsobol_pairs_.size() <= dimension) zsobol_pairs_.push_back(zsobol_->pair(std::uint32_t(zsobol_pairs_.size())));
+    if (zsobol_stamps_.size() <= dimension) zsobol_stamps_.resize(dimension + 1, 0), zsobol_pixel_digits_.resize(dimension + 1);
+    const ZSobol::Pair& pair = zsobol_pairs_[dimension];
+    if (zsobol_stamps_[dimension] != pixel_stamp_) {
+      zsobol_pixel_digits_[dimension] = zsobol_->pixel_digits(pixel_x_, pixel_y_, pair);
+      zsobol_stamps_[dimension] = pixel_stamp_;
+    }
+    return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair);
+  }
 
   /// halton (permute) without RandomDigitPermutations' tables: what point i < n
   /// of the set RandomDigitPermutations(seed, {2, 3}, n − 1) needs, for

@@ -1,0 +1,168 @@
+#pragma once
+/// ZSobol: a pixel sampler whose Monte Carlo error is blue noise in screen
+/// space (Ahmed & Wonka 2020, "Screen-space blue-noise diffusion of Monte
+/// Carlo sampling error via hierarchical ordering of pixels"; the sampler
+/// pbrt-v4 ships as ZSobolSampler).
+///
+/// One Owen-scrambled Sobol' (0,2)-sequence is shared by the whole image:
+/// pixel (x, y) takes the spp = 2^L consecutive points of index
+/// (morton(x, y) · 2^L + i), so four neighbouring pixels (a quad of the
+/// Morton curve) together hold an aligned block of 4·spp points, sixteen
+/// pixels one of 16·spp, and so on: together they are nets, so their errors
+/// partly cancel between neighbours — the error is pushed to high
+/// frequencies. The Morton order alone would leave visible structure (the
+/// same offsets repeat in every quad), so each base-4 digit of the index is
+/// permuted by one of the 24 permutations of {0, 1, 2, 3}, chosen by a hash
+/// of the higher digits (the quad it lies in) and the dimension: a random
+/// hierarchical ordering of the pixels, independent per dimension.
+///
+/// Per pixel the points are still an aligned block of 2^L points of the
+/// sequence (the permutation maps the digits of the sample index within the
+/// pixel's own block), so each pixel keeps Sobol's stratification ((0, L, 2)
+/// net per pair of dimensions), and Owen scrambling makes every point
+/// uniform: unbiased (tested).
+///
+/// Dimensions come in pairs, as the renderer's draws do: pair p takes Sobol'
+/// dimensions 0 and 1 with their own digit permutations and their own Owen
+/// scramble, keyed by (seed, p), as pbrt's padded dimensions are.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+
+#include "stratum/randomizers/base2.hpp"
+#include "stratum/sequences/sobol.hpp"
+#include "stratum/util/error.hpp"
+#include "stratum/util/hash.hpp"
+
+namespace stratum {
+
+class ZSobol {
+ public:
+  /// The largest image side (pixels), and spp = 2^L with L ≤ max_log2_spp:
+  /// 2·14 + 24 = 52 bits of sequence index, every one a distinct double.
+  static constexpr std::uint32_t max_resolution = 16384;
+  static constexpr unsigned max_log2_spp = 24;
+
+  /// An image whose larger side is `resolution` pixels, spp samples per
+  /// pixel (a power of 2), scrambled by `seed`.
+  ZSobol(std::uint32_t resolution, std::uint64_t samples_per_pixel, std::uint64_t seed)
+      : seed_(seed), sobol_(&sobol_2d()) {
+    require(resolution >= 1 && resolution <= max_resolution, "resolution", resolution,
+            "must be in [1, 16384] (the image's larger side in pixels)");
+    require(samples_per_pixel >= 1 && std::has_single_bit(samples_per_pixel) &&
+                samples_per_pixel <= (std::uint64_t{1} << max_log2_spp),
+            "n", samples_per_pixel, "zsobol takes a power of 2 samples per pixel, at most 2^24");
+    log2_spp_ = static_cast<unsigned>(std::countr_zero(samples_per_pixel));
+    const unsigned pixel_levels = static_cast<unsigned>(std::bit_width(resolution - 1u));
+    index_bits_ = 2 * pixel_levels + log2_spp_;
+  }
+
+  std::uint64_t samples_per_pixel() const noexcept { return std::uint64_t{1} << log2_spp_; }
+  unsigned index_bits() const noexcept { return index_bits_; }
+
+  /// What a dimension pair's draws share: the key of its digit permutations
+  /// and its two Owen scrambles (derived from (seed, pair) alone, so the
+  /// renderer derives them once per render).
+  struct Pair {
+    std::uint64_t key = 0;
+    HashOwenScrambler::Dimension x{0}, y{0};
+  };
+  Pair pair(std::uint32_t p) const noexcept {
+    const std::uint64_t key = hash64(seed_, p, 0x7a736f626f6cULL /* "zsobol" */);
+    return {key, HashOwenScrambler::Dimension(hash64(key, 0)), HashOwenScrambler::Dimension(hash64(key, 1))};
+  }
+
+  /// The sequence index of sample `index` of pixel (x, y) in a dimension
+  /// pair: the Morton index with each base-4 digit permuted by a hash of the
+  /// digits above it (and of its level and the pair). The digits above the
+  /// sample index's depend on the pixel alone: pixel_digits, which a
+  /// renderer computes once per pixel and pair.
+  std::uint64_t sequence_index(std::uint32_t x, std::uint32_t y, std::uint64_t index, const Pair& pair) const noexcept {
+    return sample_digits(x, y, pixel_digits(x, y, pair), index, pair);
+  }
+  /// The permuted digits of the pixel's part of the index (bits ≥ L).
+  std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair) const noexcept {
+    return permute_digits(morton(x, y) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_));
+  }
+  /// pixel_digits(x, y, pair) with the permuted digits of sample `index` below them.
+  std::uint64_t sample_digits(std::uint32_t x, std::uint32_t y, std::uint64_t pixel_part, std::uint64_t index,
+                              const Pair& pair) const noexcept {
+    const std::uint64_t m = morton(x, y) << log2_spp_ | index;
+    const unsigned low = index_bits_ & 1u;  // an odd number of bits: the lowest is a base-2 digit
+    std::uint64_t out = pixel_part | permute_digits(m, pair, int(log2_spp_) - 2, int(low));
+    if (low) out |= (m & 1u) ^ (mix64((m >> 1) ^ pair.key ^ 0x6c6f77ULL) >> 63);
+    return out;
+  }
+
+  /// Point `sequence` of a pair: Sobol' dimensions 0 and 1 with the pair's Owen scrambles.
+  std::array<double, 2> point(std::uint64_t sequence, const Pair& pair) const noexcept {
+    return {sobol_->sample(sequence, 0, pair.x), sobol_->sample(sequence, 1, pair.y)};
+  }
+
+  /// Coordinates (2p, 2p + 1) of sample `index` of pixel (x, y), p = pair.
+  std::array<double, 2> sample_2d(std::uint32_t x, std::uint32_t y, std::uint64_t index, std::uint32_t p) const noexcept {
+    const Pair keys = pair(p);
+    return point(sequence_index(x, y, index, keys), keys);
+  }
+
+  /// Point j of an array of 2^k points belonging to one sample (the n
+  /// shadow rays of an eye ray): index sequence · 2^k + j of the pair's
+  /// sequence, so the array is an aligned block (stratified among itself)
+  /// and neighbouring pixels' arrays are neighbouring blocks.
+  std::array<double, 2> array_point(std::uint64_t sequence, unsigned k, std::uint64_t j, const Pair& pair) const noexcept {
+    return point((sequence << k) | j, pair);
+  }
+
+ private:
+  static constexpr std::uint64_t morton(std::uint32_t x, std::uint32_t y) noexcept {
+    return interleave(x) | (interleave(y) << 1);
+  }
+  /// The base-4 digits of m at shifts top, top − 2, … ≥ bottom, each
+  /// permuted by one of the 24 permutations, picked by a hash of the digits
+  /// above it, its level and the pair (Lemire's multiply-shift instead of a
+  /// modulo: a division per digit would cost more than the hash).
+  static std::uint64_t permute_digits(std::uint64_t m, const Pair& pair, int top, int bottom) noexcept {
+    std::uint64_t out = 0;
+    for (int shift = top; shift >= bottom; shift -= 2) {
+      const std::uint64_t digit = (m >> shift) & 3u;
+      const std::uint64_t h = mix64((m >> (shift + 2)) ^ pair.key ^ (std::uint64_t(shift) << 58));
+      const auto& permutation = permutations()[((h >> 32) * 24) >> 32];
+      out |= std::uint64_t{permutation[digit]} << shift;
+    }
+    return out;
+  }
+  /// The bits of v at even positions (x → x0 0 x1 0 …), for 16-bit v.
+  static constexpr std::uint64_t interleave(std::uint64_t v) noexcept {
+    v &= 0xffffu;
+    v = (v | (v << 8)) & 0x00ff00ffULL;
+    v = (v | (v << 4)) & 0x0f0f0f0fULL;
+    v = (v | (v << 2)) & 0x33333333ULL;
+    v = (v | (v << 1)) & 0x55555555ULL;
+    return v;
+  }
+  /// The 24 permutations of {0, 1, 2, 3} in lexicographic order.
+  static const std::array<std::array<std::uint8_t, 4>, 24>& permutations() noexcept {
+    static constexpr auto table = [] {
+      std::array<std::array<std::uint8_t, 4>, 24> all{};
+      std::array<std::uint8_t, 4> p{0, 1, 2, 3};
+      for (auto& entry : all) {
+        entry = p;
+        std::next_permutation(p.begin(), p.end());
+      }
+      return all;
+    }();
+    return table;
+  }
+  static const Sobol& sobol_2d() {
+    static const Sobol sobol(2);
+    return sobol;
+  }
+
+  std::uint64_t seed_;
+  const Sobol* sobol_;
+  unsigned log2_spp_ = 0;
+  unsigned index_bits_ = 0;
+};
+
+}  // namespace stratum
