@@ -12,6 +12,8 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/json.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/util/error.hpp"
 
@@ -29,13 +31,8 @@ struct CompareCommand {
 };
 
 nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw invalid_argument("configs", path, "must be a readable JSON file");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw invalid_argument("configs", path, std::string("is not valid JSON: ") + e.what());
-  }
+  // A regular file only (a FIFO would hang), nesting capped (io::parse_json).
+  return io::parse_json(io::read_regular_file("configs", path, std::uint64_t{1} << 26), "configs", path);
 }
 
 void run_compare(CompareCommand& o) {

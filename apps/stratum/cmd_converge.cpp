@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/util/error.hpp"
@@ -47,6 +48,7 @@ nlohmann::json to_json(const sa::ConvergenceResult& result) {
 }
 
 void run_converge(const ConvergeOptions& o) {
+  const auto figure = plot::prepare_plot("plot", o.plot);  // checked before the work
   require(!o.samplers.empty(), "samplers", "(missing)",
           "give --samplers A,B,... (each a spec NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md)");
   require(!o.d || (*o.d >= 1 && *o.d <= std::numeric_limits<unsigned>::max()), "d", o.d.value_or(0),
@@ -69,7 +71,7 @@ void run_converge(const ConvergeOptions& o) {
   request.threads = static_cast<unsigned>(o.threads);
   const sa::ConvergenceResult result = sa::run_convergence(request);
   const nlohmann::json data = to_json(result);
-  if (!o.plot.empty()) plot::write_plot("converge", data, o.plot);
+  if (figure) plot::write_plot("converge", data, *figure);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("integrand {} (d = {}), exact {:.17g}, {} runs per N\n", result.integrand, result.d, result.exact,
              result.runs);

@@ -20,13 +20,13 @@ namespace sa = stratum::analysis;
 
 struct LocalOptions : PointInput {
   std::int64_t resolution = 64;
-  std::string format = "txt", output;
+  std::string format, output;
   bool box = false;
 };
 
 void run_local(const LocalOptions& o) {
   require(o.resolution >= 1 && o.resolution <= 4096, "resolution", o.resolution, "must be in [1, 4096]");
-  const io::PointFormat format = io::parse_point_format(o.format);
+  TableOutput table_output(o.output, o.format);  // checked before the work
   const PointSet points = load_points(o);
   const sa::PointView view{points.data.get(), points.n, points.d};
   require(view.d == 2, "d", view.d, "the local discrepancy needs 2D points");
@@ -46,7 +46,7 @@ void run_local(const LocalOptions& o) {
   const std::size_t side = grid.resolution + 1;
   PointSet table{side, side, std::make_unique<double[]>(side * side)};
   std::copy(grid.values.begin(), grid.values.end(), table.data.get());
-  write_table(o.output, table, format);
+  table_output.write(table);
 }
 }  // namespace
 
@@ -58,7 +58,7 @@ void add_local_discrepancy_command(CLI::App& app) {
   command->add_option("-r,--resolution", o->resolution, "R: the grid's corners are (i/R, j/R), i, j = 0..R (1..4096)")
       ->capture_default_str();
   command->add_flag("--box", o->box, "print the box [0,x) x [0,y) attaining D* (O(N^2), N <= 20000); the grid then goes only to -o FILE");
-  command->add_option("--format", o->format, "txt|csv|npy")->capture_default_str();
+  command->add_option("--format", o->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", o->output, "output file: (R+1) rows of R+1 values, row j for y = j/R (stdout when absent)");
   command->callback([o] { run_local(*o); });
 }

@@ -21,7 +21,7 @@ struct PointsOptions {
   std::uint64_t start = 0;
   std::optional<double> radius;
   std::int64_t threads = 1;
-  std::string format = "txt";
+  std::string format;
   std::string output;
 };
 
@@ -38,9 +38,9 @@ void run_points(const PointsOptions& options) {
   request.start = options.start;
   request.radius = options.radius;
   request.threads = static_cast<unsigned>(options.threads);
-  const io::PointFormat format = io::parse_point_format(options.format);
+  TableOutput table_output(options.output, options.format);  // checked before the work
   const PointSet points = generate_points(spec.name, request);
-  write_table(options.output, points, format);
+  table_output.write(points);
 }
 }  // namespace
 
@@ -58,7 +58,7 @@ void add_points_command(CLI::App& app) {
       ->default_str("0");
   command->add_option("--radius", options->radius, "Poisson-disk radius");
   add_threads_option(*command, options->threads, "threads for bulk generation");
-  command->add_option("--format", options->format, "txt|csv|npy")->capture_default_str();
+  command->add_option("--format", options->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", options->output, "output file (stdout when absent)");
   command->callback([options] { run_points(*options); });
 }

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
@@ -39,9 +40,15 @@ void run_render(RenderOptions& options) {
   render::validate_settings(options.settings);
   require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",
           options.reference_spp, "must be in [1, 2^24]");
-  render::check_image_path("output", options.output);  // before the render, not after it
+  // Every output checked and staged before the render, not after it (docs/outputs.md).
+  render::check_image_path("output", options.output);
   if (!options.exr.empty()) render::check_image_path("exr", options.exr);
   if (!options.variance.empty()) render::check_variance_path("variance", options.variance);
+  io::OutputGroup outputs;
+  io::OutputFile* png = outputs.add("output", options.output);
+  io::OutputFile* exr = outputs.add("exr", options.exr);
+  io::OutputFile* variance = outputs.add("variance", options.variance);
+  outputs.prepare();
   std::vector<std::string> warnings;
   render::Scene scene = options.scene.empty() ? render::cornell_box() : render::load_scene(options.scene, &warnings);
   for (const auto& warning : warnings) fmt::print(stderr, "stratum: warning: {}\n", warning);
@@ -67,15 +74,18 @@ void run_render(RenderOptions& options) {
     fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text, cached ? "loaded from the cache" : "rendered and cached in",
                render::reference_cache_path(scene, key, options.settings, spp, options.cache));
   } else {
-    std::signal(SIGINT, on_interrupt);
+    // Ctrl-C stops the render and keeps its partial image; the handler that
+    // was there before (removing staging files) is back for the writing.
+    const auto previous = std::signal(SIGINT, on_interrupt);
     image = render::render(scene, options.settings, progress, &interrupted);
-    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGINT, previous);
   }
   require(options.variance.empty() || image.variance.size() == image.rgb.size(), "variance", options.variance,
           "needs per-pixel variances: this cached reference has none (delete it from --cache to render it again)");
-  render::write_image(image, options.output);
-  if (!options.exr.empty()) render::write_image(image, options.exr);
-  if (!options.variance.empty()) render::write_variance_image(image, options.variance);
+  render::write_image(image, *png);
+  if (exr) render::write_image(image, *exr);
+  if (variance) render::write_variance_image(image, *variance);
+  outputs.commit();  // all or none: a failure here removes the outputs committed before it
   if (!options.quiet)
     fmt::print("{}: {}x{}, {} spp, {:.2f} s{}\n", options.output, image.width, image.height, image.samples, image.seconds,
                interrupted ? " (interrupted)" : options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/analysis/spectrum.hpp"
@@ -111,6 +112,7 @@ void run_image_spectrum(const SpectrumOptions& o) {
 void run_spectrum(const SpectrumOptions& o) {
   if (!o.image.empty()) return run_image_spectrum(o);
   if (!o.reference.empty()) throw invalid_argument("--reference", o.reference, "applies only to --image");
+  const auto figure = plot::prepare_plot("output", o.png);  // checked before the work
   if (o.max_frequency)
     require(*o.max_frequency >= 1 && *o.max_frequency <= 1 << 24, "max-frequency", *o.max_frequency,
             "must be an integer in [1, 2^24] (and (2K+1)^d at most 2^25 values)");
@@ -142,7 +144,7 @@ void run_spectrum(const SpectrumOptions& o) {
                          {"oscillation_window", {figures.oscillation_from, figures.oscillation_to}},
                          {"oscillation_window_is_cut", figures.window_is_cut},
                          {"power", p.power}};
-  if (!o.png.empty()) plot::write_plot("spectrum", data, o.png);
+  if (figure) plot::write_plot("spectrum", data, *figure);
   if (o.json) {
     fmt::print("{}\n", data.dump(2));
     return;

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/dimension_study.hpp"
 #include "stratum/util/error.hpp"
@@ -61,6 +62,7 @@ nlohmann::json to_json(const sa::DimensionStudy& study) {
 }
 
 void run_dimension(const DimensionOptions& o) {
+  const auto figure = plot::prepare_plot("plot", o.plot);  // checked before the work
   require(o.runs >= 2 && o.runs <= 100000, "runs", o.runs, "must be in [2, 100000] (an RMSE needs 2 runs)");
   sa::DimensionStudyRequest request;
   const auto [d_lo, d_hi] = parse_range("dims", o.dims, 64);
@@ -75,7 +77,7 @@ void run_dimension(const DimensionOptions& o) {
   request.threads = static_cast<unsigned>(o.threads);
   const sa::DimensionStudy study = sa::run_dimension_study(request);
   const nlohmann::json data = to_json(study);
-  if (!o.plot.empty()) plot::write_plot("dimension", data, o.plot);
+  if (figure) plot::write_plot("dimension", data, *figure);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("{} rule vs Monte Carlo on {}, {} runs per (d, N); errors: product |Q - I|, MC and Sobol' RMSE\n",
              study.rule, study.integrand, study.runs);

@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/importance_study.hpp"
 #include "stratum/util/error.hpp"
@@ -58,6 +59,7 @@ void print_table(const std::vector<sa::ImportanceComparison>& list) {
 }
 
 void run_importance(const ImportanceOptions& o) {
+  const auto figure = plot::prepare_plot("plot", o.plot);  // checked before the work
   require(o.runs >= 2 && o.runs <= 100000, "runs", o.runs, "must be in [2, 100000] (a standard error needs 2 runs)");
   require(o.samples >= 2 && o.samples <= (std::int64_t{1} << 30), "samples", o.samples, "must be in [2, 2^30]");
   sa::ImportanceStudyRequest request;
@@ -70,7 +72,7 @@ void run_importance(const ImportanceOptions& o) {
   const sa::ImportanceStudy study = sa::run_importance_study(request);
   const nlohmann::json data = {{"runs", study.runs}, {"samples", study.samples},
                                {"hemisphere", to_json(study.hemisphere)}, {"light", to_json(study.light)}};
-  if (!o.plot.empty()) plot::write_plot("importance", data, o.plot);
+  if (figure) plot::write_plot("importance", data, *figure);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("irradiance at a point (normal +z), {} runs x {} samples per method; variances per sample\n", study.runs,
              study.samples);

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/analysis/mitchell_study.hpp"
@@ -48,6 +49,7 @@ nlohmann::json to_json(const analysis::MitchellStudy& study) {
 }
 
 void run_mitchell(const MitchellOptions& options) {
+  const auto figure = plot::prepare_plot("plot", options.plot);  // checked before the work
   analysis::MitchellStudyOptions study_options;
   study_options.counts.clear();
   for (std::int64_t n : options.counts) {
@@ -67,7 +69,7 @@ void run_mitchell(const MitchellOptions& options) {
   study_options.threads = static_cast<unsigned>(options.threads);
   const auto study = analysis::run_mitchell_study(study_options);
   const nlohmann::json data = to_json(study);
-  if (!options.plot.empty()) plot::write_plot("mitchell", data, options.plot);
+  if (figure) plot::write_plot("mitchell", data, *figure);
   if (options.json) fmt::print("{}\n", data.dump(2));
   else fmt::print("{}", analysis::mitchell_table(study));
 }

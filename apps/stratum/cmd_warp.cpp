@@ -23,7 +23,7 @@ struct WarpOptions {
   std::int64_t n = 0;
   SamplerOptions sampler{"random"};
   std::vector<std::string> warp_params;
-  std::string format = "txt";
+  std::string format;
   std::string output;
   bool list = false;
 };
@@ -32,11 +32,8 @@ struct WarpOptions {
 std::vector<double> parse_numbers(const std::string& key, const std::string& text) {
   std::string body = text;
   if (!text.empty() && text[0] == '@') {
-    std::ifstream file(text.substr(1));
-    if (!file) throw invalid_argument(key, text, "cannot read the file " + text.substr(1));
-    std::ostringstream content;
-    content << file.rdbuf();
-    body = content.str();
+    // A regular file only: a FIFO or /dev/zero would never end.
+    body = io::read_regular_file(key, text.substr(1), std::uint64_t{1} << 30);
   }
   for (char& c : body)
     if (c == ',' || c == '\n' || c == '\t' || c == '\r') c = ' ';
@@ -72,7 +69,7 @@ void run_warp(const WarpOptions& options) {
     const std::string key = item.substr(0, equals);
     params[key] = parse_numbers(key, item.substr(equals + 1));
   }
-  const io::PointFormat format = io::parse_point_format(options.format);
+  TableOutput table_output(options.output, options.format);  // checked before the work
   const auto warp = make_warp(options.map, params);
   const SamplerSpec spec = options.sampler.spec();
   SamplerRequest request = options.sampler.request(spec);
@@ -88,7 +85,7 @@ void run_warp(const WarpOptions& options) {
     for (std::size_t k = 0; k < out_dim; ++k) rows.data[i * rows.d + k] = points[i * out_dim + k];
     rows.data[i * rows.d + out_dim] = pdf[i];
   }
-  write_table(options.output, rows, format);
+  table_output.write(rows);
 }
 }  // namespace
 
@@ -102,7 +99,7 @@ void add_warp_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--warp-param", options->warp_params,
                       "warp parameter KEY=V1,V2,... or KEY=@FILE (repeatable)");
-  command->add_option("--format", options->format, "txt|csv|npy")->capture_default_str();
+  command->add_option("--format", options->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", options->output, "output file (stdout when absent)");
   command->add_flag("--list", options->list, "list the warps with their domains and parameters");
   command->callback([options] { run_warp(*options); });

@@ -3,11 +3,14 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 #include "commands.hpp"
 #include "distributed_session.hpp"
 #include "stratum/distributed.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
 
 int main(int argc, char** argv) {
@@ -35,10 +38,12 @@ int main(int argc, char** argv) {
   stratum::cli::add_study_mitchell_command(*study);
   stratum::cli::add_study_dimension_command(*study);
   stratum::cli::add_study_importance_command(*study);
+  stratum::io::install_signal_cleanup();  // Ctrl-C or SIGTERM: no staging file is left behind
   int code = 0;
   std::string message;
   try {
     app.parse(argc, argv);
+    stratum::io::check_stdout();  // output lost on a full disk or a closed stdout is an error
   } catch (const CLI::ConversionError& e) {
     code = 2, message = fmt::format("{}: not a valid number for this option (see --help)", e.what());
   } catch (const CLI::ParseError& e) {
@@ -47,6 +52,10 @@ int main(int argc, char** argv) {
     code = 1;  // another rank failed and says why
   } catch (const stratum::invalid_argument& e) {
     code = 2, message = e.what();
+  } catch (const std::filesystem::filesystem_error& e) {
+    code = 1, message = e.what();
+  } catch (const std::system_error& e) {  // fmt::print to a stdout that lost it (a full disk, a closed stdout)
+    code = 1, message = "stdout: output was lost (" + e.code().message() + ")";
   } catch (const std::bad_alloc&) {
     code = 3, message = "out of memory";
   } catch (const std::exception& e) {

@@ -40,14 +40,16 @@ PointSet load_points(const PointInput& o) {
   return generate_points(spec.name, request);
 }
 
-void write_table(const std::string& output, const PointSet& table, io::PointFormat format) {
-  if (output.empty() || output == "-") {
-    std::ios::sync_with_stdio(false);
-    io::write_points(std::cout, table, format);
-    std::cout.flush();
-  } else {
-    io::write_points_file(output, table, format);
-  }
+TableOutput::TableOutput(const std::string& output, const std::string& format)
+    : format_(io::resolve_point_format(output, format)) {
+  if (output.empty() || output == "-") return;
+  file_ = std::make_unique<io::OutputFile>("output", output);
+  file_->prepare();
+}
+
+void TableOutput::write(const PointSet& table) {
+  if (file_) return io::write_points_file(*file_, table, format_);
+  io::write_stdout([&](std::ostream& out) { io::write_points(out, table, format_); });
 }
 
 }  // namespace stratum::cli

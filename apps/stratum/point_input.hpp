@@ -6,10 +6,12 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "sampler_options.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/io/points.hpp"
 #include "stratum/registry.hpp"
 
@@ -29,8 +31,19 @@ void add_point_input_options(CLI::App& command, PointInput& input);
 /// with a file, or a bad n or d.
 PointSet load_points(const PointInput& input);
 
-/// Writes `table` to `output` atomically (io::write_points_file), or to
-/// stdout when `output` is empty or "-".
-void write_table(const std::string& output, const PointSet& table, io::PointFormat format);
+/// Where a command's table goes: -o FILE, prepared (checked, staged) when
+/// constructed, before the command's work; or stdout when `output` is empty
+/// or "-". The format follows --format or the extension (io::resolve_point_format).
+class TableOutput {
+ public:
+  TableOutput(const std::string& output, const std::string& format);
+  /// Writes the table (file: never half-written; stdout: every write checked).
+  void write(const PointSet& table);
+  bool to_file() const { return file_ != nullptr; }
+
+ private:
+  std::unique_ptr<io::OutputFile> file_;
+  io::PointFormat format_;
+};
 
 }  // namespace stratum::cli

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "stratum/io/json.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/util/error.hpp"
 
@@ -54,7 +55,7 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
   if (configs_json.empty()) {
     configs = render::builtin_comparison(builtin, threads, seed);
   } else {
-    configs = render::parse_configs(nlohmann::json::parse(configs_json), threads, seed);
+    configs = render::parse_configs(io::parse_json(configs_json, "configs", "(the configs given)"), threads, seed);
   }
   const bool keep_motion = configs_json.empty() && builtin == "time-pattern";
   const auto prepared = render::comparison_scene(scene_path, keep_motion, width, height);

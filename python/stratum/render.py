@@ -14,8 +14,17 @@ from . import _checks, _stratum
 __all__ = ["render", "compare", "comparisons"] if hasattr(_stratum, "comparisons") else []
 
 
+def _shown(value):
+    """repr(value) for a message: cut to 80 characters, and never a RecursionError."""
+    try:
+        text = repr(value)
+    except RecursionError:
+        return "(a value nested too deeply to show)"
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
 def _error(name, value, allowed):
-    return _stratum.InvalidArgument(f"invalid {name} = {value!r}: {allowed}")
+    return _stratum.InvalidArgument(f"invalid {name} = {_shown(value)}: {allowed}")
 
 
 def _count(name, value, low=1, high=2**24):
@@ -100,6 +109,8 @@ def compare(scene=None, builtin: str | None = None, configs: list[dict] | None =
     if configs is not None:
         try:
             text = json.dumps(configs)
+        except RecursionError:
+            raise _error("configs", configs, "must not nest lists and dicts deeper than 256 levels") from None
         except (TypeError, ValueError) as e:
             raise _error("configs", configs, f"must be a list of JSON-serializable dicts ({e})") from None
         if not isinstance(configs, (list, tuple)):

@@ -1,7 +1,6 @@
 #include "stratum/io/points.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstring>
@@ -9,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "stratum/distributed.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::io {
@@ -60,30 +59,51 @@ void write_points(std::ostream& out, const PointSet& points, PointFormat format)
   }
 }
 
+std::optional<PointFormat> point_format_of_extension(const std::filesystem::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension == ".npy") return PointFormat::npy;
+  if (extension == ".csv") return PointFormat::csv;
+  if (extension == ".txt") return PointFormat::txt;
+  return std::nullopt;
+}
+
+static const char* format_name(PointFormat format) {
+  switch (format) {
+    case PointFormat::npy: return "npy";
+    case PointFormat::csv: return "csv";
+    case PointFormat::txt: break;
+  }
+  return "txt";
+}
+
+PointFormat resolve_point_format(const std::string& output, const std::string& format) {
+  const bool to_file = !output.empty() && output != "-";
+  const auto by_extension = to_file ? point_format_of_extension(output) : std::nullopt;
+  if (format.empty()) return by_extension.value_or(PointFormat::txt);
+  const PointFormat chosen = parse_point_format(format);
+  if (by_extension && *by_extension != chosen)
+    throw invalid_argument("format", format,
+                           fmt::format("does not match the output {} (a .{} file): leave --format out, or name the "
+                                       "file .{}, which is how stratum reads it back",
+                                       output, format_name(*by_extension), format_name(chosen)));
+  if (to_file && !by_extension && chosen != PointFormat::txt)  // any other name is read back as text
+    throw invalid_argument("format", format,
+                           fmt::format("needs an output name ending in .{0} (not {1}): stratum reads a file as .{0} "
+                                       "by its extension, any other name as whitespace text",
+                                       format_name(chosen), output));
+  return chosen;
+}
+
+void write_points_file(OutputFile& output, const PointSet& points, PointFormat format) {
+  output.write([&](std::ostream& out) { write_points(out, points, format); });
+  output.commit();
+}
+
 void write_points_file(const std::filesystem::path& path, const PointSet& points, PointFormat format) {
-  const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::error_code ec;
-  if (!std::filesystem::is_directory(directory, ec))
-    throw invalid_argument("output", path.string(), "its directory does not exist");
-  if (!distributed::is_root()) return;  // a distributed job writes once, from rank 0
-  const std::filesystem::path temporary =
-      directory / fmt::format(".{}.tmp{}", path.filename().string(), static_cast<long>(getpid()));
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw invalid_argument("output", path.string(), "cannot be written (permission denied?)");
-    write_points(out, points, format);
-    out.flush();
-    if (!out) {
-      out.close();
-      std::filesystem::remove(temporary, ec);
-      throw invalid_argument("output", path.string(), "writing failed (disk full?)");
-    }
-  }
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw invalid_argument("output", path.string(), "cannot be replaced");
-  }
+  resolve_point_format(path.string(), format_name(format));
+  OutputFile output("output", path.string());
+  output.prepare();
+  write_points_file(output, points, format);
 }
 
 static PointSet read_npy(std::ifstream& in, const std::string& name) {
@@ -117,6 +137,7 @@ static PointSet read_npy(std::ifstream& in, const std::string& name) {
 }
 
 PointSet read_points_file(const std::filesystem::path& path) {
+  refuse_special_file("input", path.string());  // a FIFO or /dev/zero would never end
   std::ifstream in(path, std::ios::binary);
   if (!in) throw invalid_argument("input", path.string(), "cannot be opened");
   if (path.extension() == ".npy") return read_npy(in, path.string());

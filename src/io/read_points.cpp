@@ -181,6 +181,8 @@ PointSet read_text_strict(std::ifstream& in, const std::filesystem::path& path, 
 PointSet read_points_strict(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) bad_input(path, "is a directory, not a point file");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    bad_input(path, "is not a regular file (a FIFO or device would never end): give a point file");
   std::ifstream in(path, std::ios::binary);
   if (!in) bad_input(path, "cannot be opened (no such file or no permission)");
   const std::string extension = path.extension().string();

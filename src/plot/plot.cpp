@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "stratum/distributed.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/plot_scripts.hpp"
 #include "stratum/util/error.hpp"
 
@@ -118,12 +119,22 @@ for job in json.load(open(sys.argv[1])):
 sys.exit(1 if failed else 0)
 )stratum_py";
 
-/// The temporary files of one job: its script, its data and its figure
-/// (beside the target, so the final rename stays on one file system).
+/// Writes a temporary input file of the plot, checked.
+void write_temporary(const std::string& path, std::string_view text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error("plot: cannot write the temporary file " + path + " (no room on the disk?)");
+}
+
+/// The temporary files of one job: its script and its data (in the
+/// temporary folder) and its figure (the staging file of its output).
 struct StagedJob {
   std::string script_name;
   std::string target;
-  TemporaryFile code, json, figure;
+  std::unique_ptr<io::OutputFile> own;  // when the job brought no prepared output
+  io::OutputFile* figure = nullptr;
+  TemporaryFile code, json;
 };
 
 std::unique_ptr<StagedJob> stage(const PlotJob& job) {
@@ -132,25 +143,37 @@ std::unique_ptr<StagedJob> stage(const PlotJob& job) {
   auto staged = std::make_unique<StagedJob>();
   staged->script_name = job.script;
   staged->target = job.png;
-  const fs::path target(job.png);
-  const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  staged->figure.path = make_temporary((directory / ("." + target.filename().string() + ".")).string(), ".png");
-  if (staged->figure.path.empty())
-    throw invalid_argument("plot", job.png, std::string("must be a writable path (") + std::strerror(errno) + ")");
+  staged->figure = job.output;
+  if (!staged->figure) {
+    staged->own = std::make_unique<io::OutputFile>("plot", job.png);
+    staged->figure = staged->own.get();
+  }
+  staged->figure->prepare();
   const std::string temp_dir = fs::temp_directory_path().string();
   staged->json.path = make_temporary(temp_dir + "/stratum-plot-", ".json");
   staged->code.path = make_temporary(temp_dir + "/stratum-plot-", ".py");
   if (staged->json.path.empty() || staged->code.path.empty())
     throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
-  std::ofstream(staged->json.path) << job.data.dump();
-  std::ofstream(staged->code.path) << text;
+  write_temporary(staged->json.path, job.data.dump());
+  write_temporary(staged->code.path, text);
   return staged;
 }
 
 }  // namespace
 
+std::unique_ptr<io::OutputFile> prepare_plot(const std::string& argument, const std::string& png) {
+  if (png.empty()) return nullptr;
+  auto output = std::make_unique<io::OutputFile>(argument, png);
+  output->prepare();
+  return output;
+}
+
 void write_plot(std::string_view script, const nlohmann::json& data, const std::string& png) {
   write_plots({PlotJob{std::string(script), data, png}}, 1);
+}
+
+void write_plot(std::string_view script, const nlohmann::json& data, io::OutputFile& png) {
+  write_plots({PlotJob{std::string(script), data, png.path(), &png}}, 1);
 }
 
 void write_plots(const std::vector<PlotJob>& jobs, unsigned processes) {
@@ -163,34 +186,36 @@ void write_plots(const std::vector<PlotJob>& jobs, unsigned processes) {
   const std::string temp_dir = fs::temp_directory_path().string();
   TemporaryFile driver{make_temporary(temp_dir + "/stratum-plot-", ".py")};
   if (driver.path.empty()) throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
-  std::ofstream(driver.path) << batch_driver;
+  write_temporary(driver.path, batch_driver);
   std::vector<TemporaryFile> lists(processes);
   std::vector<pid_t> children;
   for (unsigned p = 0; p < processes; ++p) {
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t i = p; i < staged.size(); i += processes)
-      list.push_back({{"script", staged[i]->code.path}, {"data", staged[i]->json.path}, {"out", staged[i]->figure.path}});
+      list.push_back({{"script", staged[i]->code.path}, {"data", staged[i]->json.path}, {"out", staged[i]->figure->staging()}});
     lists[p].path = make_temporary(temp_dir + "/stratum-plot-", ".json");
     if (lists[p].path.empty()) throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
-    std::ofstream(lists[p].path) << list.dump();
+    write_temporary(lists[p].path, list.dump());
   }
   for (unsigned p = 0; p < processes; ++p) children.push_back(start_python({driver.path, lists[p].path}));
   int worst = 0;
   for (const pid_t child : children) worst = std::max(worst, wait_python(child));
   for (const auto& job : staged) {
     std::error_code error;
-    if (fs::file_size(job->figure.path, error) == 0 || error)
+    if (fs::file_size(job->figure->staging(), error) == 0 || error)
       throw std::runtime_error("plot: the matplotlib script '" + job->script_name + "' failed (exit status " +
                                std::to_string(worst) + "); no figure written for " + job->target);
   }
   if (worst != 0) throw std::runtime_error("plot: Python exited with status " + std::to_string(worst));
-  for (auto& job : staged) {
-    // mkstemps made the file private; a figure is for sharing (0644 less the umask).
-    const mode_t mask = umask(0);
-    umask(mask);
-    chmod(job->figure.path.c_str(), 0644 & ~mask);
-    fs::rename(job->figure.path, job->target);
-    job->figure.path.clear();
+  for (auto& job : staged) job->figure->check_staged();
+  // All figures in place, or none: a failure removes those put in place before it.
+  for (std::size_t i = 0; i < staged.size(); ++i) {
+    try {
+      staged[i]->figure->commit();
+    } catch (...) {
+      for (std::size_t j = 0; j < i; ++j) staged[j]->figure->remove_committed();
+      throw;
+    }
   }
 }
 

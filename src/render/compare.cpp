@@ -12,6 +12,8 @@
 #include "image_plugin.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/distributed.hpp"
+#include "stratum/io/json.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
@@ -94,24 +96,24 @@ std::vector<CompareConfig> builtin_comparison(const std::string& name, unsigned 
 }
 
 std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned threads, std::uint64_t seed) {
-  if (!configs.is_array() || configs.empty()) throw invalid_argument("configs", configs.dump().substr(0, 80), "must be a non-empty JSON array");
+  if (!configs.is_array() || configs.empty()) throw invalid_argument("configs", io::json_excerpt(configs), "must be a non-empty JSON array");
   std::vector<CompareConfig> result;
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const auto& c = configs[i];
     const std::string where = "configs[" + std::to_string(i) + "]";
-    if (!c.is_object()) throw invalid_argument(where, c.dump(), "must be an object");
+    if (!c.is_object()) throw invalid_argument(where, io::json_excerpt(c), "must be an object");
     CompareConfig config{"config " + std::to_string(i), base("direct", 16, threads, seed)};
     RenderSettings& s = config.settings;
     for (const auto& item : c.items()) {
       const std::string& key = item.key();
       const auto& v = item.value();
       auto text = [&] {
-        if (!v.is_string()) throw invalid_argument(where + "." + key, v.dump(), "must be a string");
+        if (!v.is_string()) throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be a string");
         return v.get<std::string>();
       };
       auto count = [&] {
         if (!v.is_number_unsigned() || v.get<std::uint64_t>() < 1 || v.get<std::uint64_t>() > (1u << 24))
-          throw invalid_argument(where + "." + key, v.dump(), "must be an integer in [1, 2^24]");
+          throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be an integer in [1, 2^24]");
         return v.get<std::uint32_t>();
       };
       if (key == "label") config.label = text();
@@ -125,7 +127,7 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
       else if (key == "light_samples") s.light_samples = count();
       else if (key == "max_depth") s.max_depth = count();
       else if (key == "pixel_centers") {
-        if (!v.is_boolean()) throw invalid_argument(where + "." + key, v.dump(), "must be true or false");
+        if (!v.is_boolean()) throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be true or false");
         s.pixel_centers = v.get<bool>();
       }
       else
@@ -214,31 +216,126 @@ std::string reference_cache_path(const Scene& scene, const std::string& scene_ke
   return (std::filesystem::path(cache_dir) / (scene.name + "-" + settings.integrator + "-" + hex + ".exr")).string();
 }
 
-Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
-                      const std::string& cache_dir, bool* cached) {
-  const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
-  // Loaded only if every process of a distributed job sees the entry (their
-  // caches need not be shared): otherwise they render it together.
-  if (!distributed::any(!std::filesystem::exists(path))) {
-    if (cached) *cached = true;
-    Image image = read_image(path);
+namespace {
+
+/// The metadata beside a cached reference: "X.exr" -> "X.json".
+std::string metadata_sibling(const std::string& path) { return path.substr(0, path.size() - 4) + ".json"; }
+
+/// FNV-1a (64 bits) of a file's bytes and its size; false when it cannot be read.
+bool file_fingerprint(const std::string& path, std::uint64_t& size, std::string& hex) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return false;
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  size = 0;
+  unsigned char buffer[1 << 16];
+  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, file)) > 0;) {
+    for (std::size_t i = 0; i < got; ++i) hash = (hash ^ buffer[i]) * 0x100000001b3ULL;
+    size += got;
+  }
+  const bool ok = !std::ferror(file);
+  std::fclose(file);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  hex = text;
+  return ok;
+}
+
+nlohmann::json fingerprint_entry(const std::string& staged) {
+  std::uint64_t size = 0;
+  std::string hex;
+  if (!file_fingerprint(staged, size, hex)) throw std::runtime_error("cache: cannot read back " + staged);
+  return {{"bytes", size}, {"fnv1a64", hex}};
+}
+
+/// Loads a cached reference after checking it against its metadata; empty `why` when it is sound.
+Image load_cached_reference(const std::string& path, std::uint32_t spp, std::string& why) {
+  const std::string meta_path = metadata_sibling(path), variance_path = variance_sibling(path);
+  Image image;
+  try {
+    if (!std::filesystem::exists(meta_path)) {
+      why = "it has no metadata " + meta_path + " (written by an older stratum, or cut short)";
+      return image;
+    }
+    const nlohmann::json meta = io::parse_json(io::read_regular_file("cache", meta_path, 1 << 20), "cache", meta_path);
+    if (!meta.is_object() || meta.value("format", "") != "stratum-reference-1") {
+      why = meta_path + " is not stratum's reference metadata";
+      return image;
+    }
+    for (const auto& [file, key] : {std::pair{path, "image"}, std::pair{variance_path, "variance"}}) {
+      std::uint64_t size = 0;
+      std::string hex;
+      if (!file_fingerprint(file, size, hex)) {
+        why = file + " cannot be read";
+        return image;
+      }
+      const nlohmann::json& expected = meta.at(key);
+      if (expected.at("bytes").get<std::uint64_t>() != size || expected.at("fnv1a64").get<std::string>() != hex) {
+        why = file + " is not the file its metadata describes (" + std::to_string(size) + " bytes, fingerprint " + hex + ")";
+        return image;
+      }
+    }
+    image = read_image(path);
+    image.variance = read_image(variance_path).rgb;
+    if (image.width != meta.at("width").get<int>() || image.height != meta.at("height").get<int>() ||
+        image.variance.size() != image.rgb.size()) {
+      why = "its images do not have the size in its metadata";
+      return Image{};
+    }
     image.samples = spp;
-    if (std::filesystem::exists(variance_sibling(path))) image.variance = read_image(variance_sibling(path)).rgb;
-    return image;
+    why.clear();
+  } catch (const std::exception& e) {
+    why = e.what();
+    image = Image{};
+  }
+  return image;
+}
+
+}  // namespace
+
+Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
+                      const std::string& cache_dir, bool* cached, std::string* warning) {
+  const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
+  const bool there = std::filesystem::exists(path) || std::filesystem::exists(metadata_sibling(path));
+  std::string why = "not cached";
+  Image loaded = there ? load_cached_reference(path, spp, why) : Image{};
+  // Used only if every process of a distributed job has a sound entry (their
+  // caches need not be shared): otherwise they render it together.
+  if (!distributed::any(!why.empty())) {
+    if (cached) *cached = true;
+    return loaded;
+  }
+  if (there && !why.empty()) {
+    const std::string message = "the cached reference " + path + " is not sound (" + why + "): rendering it again";
+    if (warning) *warning = message;
+    else std::fprintf(stderr, "stratum: warning: %s\n", message.c_str());
   }
   if (cached) *cached = false;
+  std::error_code error;
+  std::filesystem::create_directories(cache_dir, error);
+  if (error) throw invalid_argument("cache", cache_dir, "must be a folder stratum can create: " + error.message());
+  // Staged before the render; the metadata goes in place last, so an entry
+  // is trusted only once its images are complete and match it.
+  io::OutputGroup entry;
+  io::OutputFile* variance = entry.add("cache", variance_sibling(path));
+  io::OutputFile* picture = entry.add("cache", path);
+  io::OutputFile* meta = entry.add("cache", metadata_sibling(path));
+  entry.prepare();
   Image image = render(scene, reference_settings(settings, spp));
   // Rounded to what the cache stores (32-bit floats), so a measurement
   // against a fresh reference equals one against its cached copy.
   for (double& v : image.rgb) v = static_cast<float>(v);
   for (double& v : image.variance) v = static_cast<float>(v);
-  std::error_code error;
-  std::filesystem::create_directories(cache_dir, error);
-  if (error) throw invalid_argument("cache", cache_dir, "must be a folder stratum can create: " + error.message());
-  // The variance first: a reference whose image exists always has both
-  // (written by rank 0 of a distributed job).
-  write_variance_image(image, variance_sibling(path));
-  write_image(image, path);
+  write_variance_image(image, *variance);
+  write_image(image, *picture);
+  if (!meta->active()) return image;  // written by rank 0 of a distributed job
+  const nlohmann::json metadata = {{"format", "stratum-reference-1"},
+                                   {"width", image.width},
+                                   {"height", image.height},
+                                   {"spp", spp},
+                                   {"image", fingerprint_entry(picture->staging())},
+                                   {"variance", fingerprint_entry(variance->staging())}};
+  meta->write([&](std::ostream& out) { out << metadata.dump(1) << "\n"; });
+  entry.commit();
   return image;
 }
 
@@ -341,6 +438,15 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
     std::filesystem::create_directories(options.variance_dir, error);
     if (error) throw invalid_argument("variance-dir", options.variance_dir, "must be a folder stratum can create: " + error.message());
   }
+  // Every variance image staged before the first render; all put in place at the end.
+  io::OutputGroup variance_files;
+  std::vector<io::OutputFile*> variance_file(configs.size(), nullptr);
+  if (!options.variance_dir.empty()) {
+    for (std::size_t index = 0; index < configs.size(); ++index)
+      variance_file[index] = variance_files.add(
+          "variance-dir", (std::filesystem::path(options.variance_dir) / file_name_for(index, configs[index].label)).string());
+    variance_files.prepare();
+  }
   const Accelerator accelerator(scene);  // one BVH for every configuration
   std::map<std::string, Image> references;  // one per estimand (integrator)
   std::vector<CompareRow> rows;
@@ -382,12 +488,13 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
       row.low_frequency_power = std::numeric_limits<double>::quiet_NaN();
     }
     if (!options.variance_dir.empty()) {
-      row.variance_path = (std::filesystem::path(options.variance_dir) / file_name_for(index, config.label)).string();
-      write_variance_image(image, row.variance_path);
+      row.variance_path = variance_file[index]->path();
+      write_variance_image(image, *variance_file[index]);
     }
     rows.push_back(row);
     if (images) images->images.push_back(std::move(image));
   }
+  variance_files.commit();
   for (CompareRow& row : rows) {
     row.mse_ratio = rows.front().mse / row.mse;
     row.efficiency_ratio = row.efficiency / rows.front().efficiency;

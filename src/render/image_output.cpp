@@ -1,6 +1,5 @@
 /// Images through OpenImageIO (loaded on first use: image_plugin.hpp):
 /// linear EXR, or 8-bit sRGB for other formats.
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,7 +11,7 @@
 #include <stdexcept>
 
 #include "image_plugin.hpp"
-#include "stratum/distributed.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
@@ -36,12 +35,11 @@ std::string lowercase_extension(const std::string& path) {
 
 }  // namespace
 
-void write_image(const Image& image, const std::string& path) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const std::string extension = lowercase_extension(path);
-  check_image_path("output", path);
-  if (!distributed::is_root()) return;  // a distributed job writes once, from rank 0
+void write_image(const Image& image, io::OutputFile& file) {
+  const std::string extension = lowercase_extension(file.path());
+  check_image_path(file.argument(), file.path());
+  file.prepare();
+  if (!file.active()) return;  // a distributed job writes once, from rank 0
   const bool linear = extension == ".exr" || extension == ".hdr";
   std::vector<float> floats;
   std::vector<unsigned char> bytes;
@@ -51,24 +49,34 @@ void write_image(const Image& image, const std::string& path) {
     bytes.resize(image.rgb.size());
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(std::lround(255 * srgb(image.rgb[i])));
   }
-  // A temporary file with the same extension (OpenImageIO picks the format
-  // by it), renamed onto `path` only when complete.
-  const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string name = ".";  // appended, not a chain of +: GCC 12's -Wrestrict misfires on that chain
-  name.append(target.stem().string()).append(".XXXXXX").append(extension);
-  std::string pattern = (directory / name).string();
-  const int fd = mkstemps(pattern.data(), static_cast<int>(extension.size()));
-  if (fd < 0) throw invalid_argument("output", path, std::string("must be writable (") + std::strerror(errno) + ")");
-  fchmod(fd, 0644);  // mkstemps makes it private (0600); an image is for everyone to read
-  close(fd);
+  // The staging file has the target's extension: OpenImageIO picks the format by it.
   try {
-    if (linear) image_plugin::write(pattern, image.width, image.height, floats.data());
-    else image_plugin::write(pattern, image.width, image.height, bytes.data());
+    if (linear) image_plugin::write(file.staging(), image.width, image.height, floats.data());
+    else image_plugin::write(file.staging(), image.width, image.height, bytes.data());
   } catch (const std::runtime_error& e) {
-    std::remove(pattern.c_str());
-    throw invalid_argument("output", path, std::string("could not be written: ") + e.what());
+    file.discard();
+    throw invalid_argument(file.argument(), file.path(), std::string("could not be written: ") + e.what());
   }
-  fs::rename(pattern, target);
+  file.check_staged();
+  // Read back: a file cut short (a full disk that a library did not report)
+  // is caught here, and stratum never leaves an image its reader refuses.
+  try {
+    const Image back = read_image(file.staging());
+    if (back.width != image.width || back.height != image.height) throw std::runtime_error("it reads back at another size");
+  } catch (const std::exception& e) {
+    std::string why = e.what();  // the reader's reason, without the staging file's name
+    const auto reason = why.find(": ", why.find(file.staging()));
+    if (why.find(file.staging()) != std::string::npos && reason != std::string::npos) why = why.substr(reason + 2);
+    file.discard();
+    throw invalid_argument(file.argument(), file.path(),
+                           "could not be written completely (no room on the disk?): it reads back as: " + why);
+  }
+}
+
+void write_image(const Image& image, const std::string& path) {
+  io::OutputFile file("output", path);
+  write_image(image, file);
+  file.commit();
 }
 
 void check_image_path(const std::string& argument, const std::string& path) {
@@ -90,15 +98,21 @@ void check_variance_path(const std::string& argument, const std::string& path) {
   require(extension == ".exr", argument, path, "must be an OpenEXR file (.exr): variances are linear, unbounded values");
 }
 
-void write_variance_image(const Image& image, const std::string& path) {
-  check_variance_path("variance", path);
-  require(image.variance.size() == image.rgb.size(), "variance", path,
+void write_variance_image(const Image& image, io::OutputFile& file) {
+  check_variance_path(file.argument(), file.path());
+  require(image.variance.size() == image.rgb.size(), file.argument(), file.path(),
           "needs the image's per-pixel variances (this image has none, e.g. a reference cached without them)");
   Image variance;
   variance.width = image.width;
   variance.height = image.height;
   variance.rgb = image.variance;
-  write_image(variance, path);
+  write_image(variance, file);
+}
+
+void write_variance_image(const Image& image, const std::string& path) {
+  io::OutputFile file("variance", path);
+  write_variance_image(image, file);
+  file.commit();
 }
 
 }  // namespace stratum::render

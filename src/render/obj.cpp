@@ -2,6 +2,8 @@
 /// Wavefront's Advanced Visualizer, appendix B1 "Object files").
 #include "stratum/render/obj.hpp"
 
+#include "stratum/io/output_file.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -84,6 +86,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& origin) {
 }
 
 ObjMesh read_obj(const std::string& path) {
+  io::refuse_special_file("mesh file", path);  // a FIFO or /dev/zero would never end
   std::ifstream in(path, std::ios::binary);
   if (!in) throw invalid_argument("mesh file", path, "must be a readable OBJ file");
   std::ostringstream text;

@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +13,8 @@
 #include <set>
 #include <sstream>
 
+#include "stratum/io/json.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/render/bsdf.hpp"
 #include "stratum/render/obj.hpp"
 #include "stratum/render/scene.hpp"
@@ -26,7 +30,7 @@ using nlohmann::json;
 class Reader {
  public:
   Reader(const json& object, std::string where, const std::set<std::string>& allowed) : object_(object), where_(std::move(where)) {
-    if (!object.is_object()) throw invalid_argument(where_, object.dump(), "must be a JSON object");
+    if (!object.is_object()) throw invalid_argument(where_, io::json_excerpt(object), "must be a JSON object");
     for (const auto& item : object.items())
       if (!allowed.count(item.key())) {
         std::string names;
@@ -46,19 +50,19 @@ class Reader {
   Vec3 vec3(const std::string& key) const { return to_vec3(at(key), name(key)); }
   std::string text(const std::string& key) const {
     const json& value = at(key);
-    if (!value.is_string()) throw invalid_argument(name(key), value.dump(), "must be a string");
+    if (!value.is_string()) throw invalid_argument(name(key), io::json_excerpt(value), "must be a string");
     return value.get<std::string>();
   }
 
   static double to_number(const json& value, const std::string& where) {
     // JSON has no NaN or Inf; nlohmann reads huge literals as inf, which is refused.
-    if (!value.is_number()) throw invalid_argument(where, value.dump(), "must be a number");
+    if (!value.is_number()) throw invalid_argument(where, io::json_excerpt(value), "must be a number");
     const double x = value.get<double>();
-    if (!std::isfinite(x)) throw invalid_argument(where, value.dump(), "must be finite");
+    if (!std::isfinite(x)) throw invalid_argument(where, io::json_excerpt(value), "must be finite");
     return x;
   }
   static Vec3 to_vec3(const json& value, const std::string& where) {
-    if (!value.is_array() || value.size() != 3) throw invalid_argument(where, value.dump(), "must be an array of 3 numbers");
+    if (!value.is_array() || value.size() != 3) throw invalid_argument(where, io::json_excerpt(value), "must be an array of 3 numbers");
     return {to_number(value[0], where + "[0]"), to_number(value[1], where + "[1]"), to_number(value[2], where + "[2]")};
   }
 
@@ -79,16 +83,16 @@ Camera read_camera(const json& value) {
   if (r.has("resolution")) {
     const json& res = r.at("resolution");
     if (!res.is_array() || res.size() != 2 || !res[0].is_number_integer() || !res[1].is_number_integer())
-      throw invalid_argument("camera.resolution", res.dump(), "must be [width, height], two positive integers");
+      throw invalid_argument("camera.resolution", io::json_excerpt(res), "must be [width, height], two positive integers");
     const auto w = res[0].get<std::int64_t>(), h = res[1].get<std::int64_t>();
-    require(w >= 1 && w <= 16384 && h >= 1 && h <= 16384, "camera.resolution", res.dump(), "each side must be in [1, 16384]");
+    require(w >= 1 && w <= 16384 && h >= 1 && h <= 16384, "camera.resolution", io::json_excerpt(res), "each side must be in [1, 16384]");
     camera.width = static_cast<int>(w);
     camera.height = static_cast<int>(h);
   }
   if (r.has("shutter")) {
     const json& shutter = r.at("shutter");
     if (!shutter.is_array() || shutter.size() != 2)
-      throw invalid_argument("camera.shutter", shutter.dump(), "must be [open, close]");
+      throw invalid_argument("camera.shutter", io::json_excerpt(shutter), "must be [open, close]");
     camera.shutter_open = Reader::to_number(shutter[0], "camera.shutter[0]");
     camera.shutter_close = Reader::to_number(shutter[1], "camera.shutter[1]");
   }
@@ -96,7 +100,7 @@ Camera read_camera(const json& value) {
 }
 
 std::vector<Material> read_materials(const json& value, std::map<std::string, std::size_t>& index) {
-  if (!value.is_object()) throw invalid_argument("materials", value.dump(), "must be an object of named materials");
+  if (!value.is_object()) throw invalid_argument("materials", io::json_excerpt(value), "must be an object of named materials");
   std::vector<Material> materials;
   for (const auto& item : value.items()) {
     const Reader r(item.value(), "materials." + item.key(), {"type", "reflectance", "emission", "exponent"});
@@ -108,7 +112,7 @@ std::vector<Material> read_materials(const json& value, std::map<std::string, st
     else if (type == "glossy") material.type = MaterialType::glossy;
     else throw invalid_argument(r.name("type"), type, "allowed types are diffuse, mirror, glossy");
     if (r.has("exponent") && material.type != MaterialType::glossy)
-      throw invalid_argument(r.name("exponent"), r.at("exponent").dump(), "applies to glossy materials only");
+      throw invalid_argument(r.name("exponent"), io::json_excerpt(r.at("exponent")), "applies to glossy materials only");
     material.exponent = r.number("exponent", material.exponent);
     material.reflectance = r.vec3("reflectance", material.reflectance);
     material.emission = r.vec3("emission", {});
@@ -154,24 +158,34 @@ Shape read_shape(const json& value, const std::string& where, const std::map<std
   } else if (type == "triangles") {
     shape.type = ShapeType::triangles;
     const json& vertices = r.at("vertices");
-    if (!vertices.is_array()) throw invalid_argument(r.name("vertices"), vertices.dump(), "must be an array of [x, y, z]");
+    if (!vertices.is_array()) throw invalid_argument(r.name("vertices"), io::json_excerpt(vertices), "must be an array of [x, y, z]");
     for (std::size_t v = 0; v < vertices.size(); ++v)
       shape.vertices.push_back(Reader::to_vec3(vertices[v], r.name("vertices") + "[" + std::to_string(v) + "]"));
     const json& indices = r.at("indices");
-    if (!indices.is_array()) throw invalid_argument(r.name("indices"), indices.dump(), "must be an array of [i, j, k]");
+    if (!indices.is_array()) throw invalid_argument(r.name("indices"), io::json_excerpt(indices), "must be an array of [i, j, k]");
     for (std::size_t t = 0; t < indices.size(); ++t) {
       const json& tri = indices[t];
+      const std::string where = r.name("indices") + "[" + std::to_string(t) + "]";
       const bool ok = tri.is_array() && tri.size() == 3 && tri[0].is_number_unsigned() && tri[1].is_number_unsigned() &&
                       tri[2].is_number_unsigned();
-      if (!ok) throw invalid_argument(r.name("indices") + "[" + std::to_string(t) + "]", tri.dump(), "must be 3 vertex indices");
-      shape.indices.push_back({tri[0].get<unsigned>(), tri[1].get<unsigned>(), tri[2].get<unsigned>()});
+      if (!ok) throw invalid_argument(where, io::json_excerpt(tri), "must be 3 vertex indices");
+      std::array<unsigned, 3> index{};
+      for (int k = 0; k < 3; ++k) {
+        // Checked before narrowing: 4294967298 would otherwise become 2.
+        const auto value = tri[k].get<std::uint64_t>();
+        if (value > std::numeric_limits<unsigned>::max())
+          throw invalid_argument(where + "[" + std::to_string(k) + "]", std::to_string(value),
+                                 "must be a vertex index below " + std::to_string(vertices.size()));
+        index[k] = static_cast<unsigned>(value);
+      }
+      shape.indices.push_back({index[0], index[1], index[2]});
     }
   } else if (type == "disk") {
     // Divided by its largest component before normalizing, so that a huge or
     // tiny (but non-zero) normal neither overflows nor underflows to zero.
     const Vec3 given = r.vec3("normal");
     const double scale = std::max({std::abs(given.x), std::abs(given.y), std::abs(given.z)});
-    require(scale > 0, r.name("normal"), r.at("normal").dump(), "must be a non-zero vector");
+    require(scale > 0, r.name("normal"), io::json_excerpt(r.at("normal")), "must be a non-zero vector");
     const Vec3 normal = given / scale;
     const double radius = r.number("radius");
     require(radius > 0, r.name("radius"), radius, "must be > 0");
@@ -217,32 +231,11 @@ Light read_light(const json& value, const std::string& where) {
   return light;
 }
 
-/// "line L, column C" of a byte offset, for parse errors.
-std::string line_and_column(const std::string& text, std::size_t byte) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& origin, std::vector<std::string>* warnings) {
-  json document;
-  try {
-    document = json::parse(text);
-  } catch (const json::parse_error& e) {
-    const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
-    throw invalid_argument("scene", origin, "is not valid JSON at " + line_and_column(text, byte));
-  } catch (const json::out_of_range&) {
-    throw invalid_argument("scene", origin, "has a number that is not finite in double precision");
-  }
+  // Nesting capped, errors with line, column and an excerpt (io::parse_json).
+  const json document = io::parse_json(text, "scene", origin);
   const Reader r(document, "scene", {"name", "camera", "materials", "shapes", "lights"});
   Scene scene;
   scene.name = r.has("name") ? r.text("name") : std::filesystem::path(origin).stem().string();
@@ -250,13 +243,13 @@ Scene parse_scene(const std::string& text, const std::string& origin, std::vecto
   std::map<std::string, std::size_t> materials;
   scene.materials = read_materials(r.at("materials"), materials);
   const json& shapes = r.at("shapes");
-  if (!shapes.is_array()) throw invalid_argument("shapes", shapes.dump(), "must be an array");
+  if (!shapes.is_array()) throw invalid_argument("shapes", io::json_excerpt(shapes), "must be an array");
   for (std::size_t s = 0; s < shapes.size(); ++s)
     scene.shapes.push_back(read_shape(shapes[s], "shapes[" + std::to_string(s) + "]", materials,
                                       std::filesystem::path(origin).parent_path()));
   if (r.has("lights")) {
     const json& lights = r.at("lights");
-    if (!lights.is_array()) throw invalid_argument("lights", lights.dump(), "must be an array");
+    if (!lights.is_array()) throw invalid_argument("lights", io::json_excerpt(lights), "must be an array");
     for (std::size_t l = 0; l < lights.size(); ++l)
       scene.lights.push_back(read_light(lights[l], "lights[" + std::to_string(l) + "]"));
   }
@@ -265,6 +258,7 @@ Scene parse_scene(const std::string& text, const std::string& origin, std::vecto
 }
 
 Scene load_scene(const std::string& path, std::vector<std::string>* warnings) {
+  io::refuse_special_file("scene", path);  // a FIFO or /dev/zero would never end
   std::ifstream in(path, std::ios::binary);
   if (!in) throw invalid_argument("scene", path, "must be a readable JSON file");
   std::ostringstream text;

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "section_context.hpp"
+#include "stratum/io/output_file.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 
@@ -56,20 +57,6 @@ struct StagingFolder {
   }
 };
 
-fs::path make_staging(const fs::path& directory) {
-  std::string pattern = (directory / ".report-partial-XXXXXX").string();
-  if (!mkdtemp(pattern.data()))
-    throw invalid_argument("directory", directory.string(), "a folder this user can write to");
-  return pattern;
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error("report: cannot write " + path.string());
-}
-
 unsigned resolve_threads(unsigned threads) {
   return threads ? threads : std::max(1u, std::thread::hardware_concurrency());
 }
@@ -98,7 +85,13 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
   std::error_code error;
   fs::create_directories(directory, error);
   if (error) throw invalid_argument("directory", options.directory, "a folder this user can create (" + error.message() + ")");
-  StagingFolder staging{make_staging(directory)};
+  // The page and its numbers checked and staged before any section runs
+  // (io::OutputFile: links written through, permissions kept).
+  io::OutputGroup pages;
+  io::OutputFile* report_json = pages.add("directory", (directory / "report.json").string());
+  io::OutputFile* index_html = pages.add("directory", (directory / "index.html").string());
+  pages.prepare();
+  StagingFolder staging{io::make_staging_folder(directory, "report")};  // a kill -9 leftover: removed by the next run
   fs::create_directory(staging.path / "figures");
 
   const unsigned threads = resolve_threads(options.threads);
@@ -124,15 +117,16 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
   for (const auto& section : result.sections)
     numbers["sections"][section.id] = {{"lecture", section.lecture}, {"title", section.title},
                                        {"seconds", section.seconds}, {"numbers", section.numbers}};
-  write_text(staging.path / "report.json", numbers.dump(1));
-  write_text(staging.path / "index.html", report_html(result.sections, options, result.seconds));
+  const std::string json_text = numbers.dump(1);
+  const std::string html_text = report_html(result.sections, options, result.seconds);
+  report_json->write([&](std::ostream& out) { out << json_text; });
+  index_html->write([&](std::ostream& out) { out << html_text; });
 
   // Into place: figures first, the page last, so index.html only ever
   // appears beside a complete set of figures.
   fs::remove_all(directory / "figures");
   fs::rename(staging.path / "figures", directory / "figures");
-  fs::rename(staging.path / "report.json", directory / "report.json");
-  fs::rename(staging.path / "index.html", directory / "index.html");
+  pages.commit();
   result.index = (directory / "index.html").string();
   return result;
 }

@@ -46,7 +46,19 @@ assert body("r1.exr") == body("r2.exr") and body("r1v.exr") == body("r2v.exr")
 assert body("r1.exr") != body("r1v.exr")
 PY
 cmp -s "$tmp/r1.png" "$tmp/r2.png" && ok || fail "cached reference PNG differs"
-[ "$(ls "$tmp/refs" | wc -l)" = 2 ] && ok || fail "cache holds the reference and its variance: $(ls "$tmp/refs")"
+[ "$(ls "$tmp/refs" | wc -l)" = 3 ] && ok || fail "cache holds the reference, its variance and metadata: $(ls "$tmp/refs")"
+# A damaged entry (cut short, or its variance replaced) is rendered again with a warning, never reported as cached.
+entry=$(ls "$tmp/refs"/*.exr | grep -v variance)
+truncate -s 100 "$entry"
+"$stratum" "${ref[@]}" -o "$tmp/r4.png" 2>"$tmp/r4.err" && ok || fail "render --reference over a damaged cache: $(cat "$tmp/r4.err")"
+grep -q "warning: the cached reference $entry is not sound" "$tmp/r4.err" && grep -q "rendered and cached" "$tmp/r4.err" \
+  && ok || fail "a damaged cache entry was not rendered again: $(cat "$tmp/r4.err")"
+cmp -s "$tmp/r1.png" "$tmp/r4.png" && ok || fail "the re-rendered reference differs"
+cp "$tmp/r1.exr" "${entry%.exr}.variance.exr"
+"$stratum" "${ref[@]}" -o "$tmp/r5.png" 2>"$tmp/r5.err" && grep -q "is not the file its metadata describes" "$tmp/r5.err" \
+  && ok || fail "a swapped variance image was trusted: $(cat "$tmp/r5.err")"
+"$stratum" "${ref[@]}" -o "$tmp/r6.png" 2>"$tmp/r6.err" && grep -q "loaded from the cache" "$tmp/r6.err" \
+  && ok || fail "the repaired entry missed the cache: $(cat "$tmp/r6.err")"
 "$stratum" render --reference --reference-spp 16 --cache "$tmp/refs" --width 12 --height 11 -q -o "$tmp/r3.png" 2>"$tmp/r3.err"
 grep -q "rendered and cached" "$tmp/r3.err" && ok || fail "another resolution hit the cache"
 expect_error "reference-spp" render --reference --reference-spp 0 -o "$tmp/x.png"

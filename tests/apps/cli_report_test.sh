@@ -30,5 +30,5 @@ else
   ok
 fi
 cmp -s "$tmp/r/index.html" "$tmp/before.html" && ok || fail "previous page changed by a failed run"
-[ -z "$(ls -A "$tmp/r" | grep partial)" ] && ok || fail "staging folder left by a failed run"
+[ -z "$(ls -A "$tmp/r" | grep stratum-tmp)" ] && ok || fail "staging folder left by a failed run"
 finish

@@ -65,7 +65,7 @@ expect_error "invalid weights" warp --map bilinear -n 4 --warp-param weights=0,0
 expect_error "invalid parameter = radius" warp --map disk-polar -n 4 --warp-param radius=1
 expect_error "invalid cos_theta_max = x: must be a number" warp --map cone -n 4 --warp-param cos_theta_max=x
 expect_error "invalid warp-param = 0.5" warp --map cone -n 4 --warp-param 0.5
-expect_error "cannot read" warp --map triangle -n 4 --warp-param vertices=@/nonexistent/v.txt
+expect_error "invalid vertices = /nonexistent/v.txt: does not exist" warp --map triangle -n 4 --warp-param vertices=@/nonexistent/v.txt
 expect_error "sampler" warp --map disk-polar -n 4 --sampler nosuch
 expect_error "format" warp --map disk-polar -n 4 --format xls
 expect_error "invalid cos_theta_max = 3" warp --map cone -n 4 --warp-param cos_theta_max=3 -o "$tmp/bad.txt"

@@ -92,7 +92,7 @@ TEST(WriteReport, OneSectionIntoPlaceAndNoStagingLeft) {
   }
   EXPECT_TRUE(fs::is_regular_file(fs::path(options.directory) / "report.json"));
   for (const auto& entry : fs::directory_iterator(options.directory))
-    EXPECT_EQ(entry.path().filename().string().find(".report-partial"), std::string::npos);
+    EXPECT_EQ(entry.path().filename().string().find(".stratum-tmp."), std::string::npos) << entry.path();
   fs::remove_all(options.directory);
 }
 

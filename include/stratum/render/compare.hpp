@@ -73,9 +73,14 @@ void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argume
 /// scene, resolution): loaded from `cache_dir` when there, else rendered
 /// with `spp` samples of owen-hash Sobol' (solid-angle light sampling,
 /// 4 shadow rays) and stored as EXR. `scene_key` identifies the scene's
-/// content. `cached` tells which happened.
+/// content. `cached` tells which happened. An entry is its image, its
+/// variance image and a metadata file (X.json: size and FNV-1a fingerprint
+/// of each), written atomically with the metadata last; an entry that does
+/// not match its metadata is rendered again, with a warning in `warning`
+/// (or on stderr when null).
 Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
-                      std::uint32_t spp, const std::string& cache_dir, bool* cached = nullptr);
+                      std::uint32_t spp, const std::string& cache_dir, bool* cached = nullptr,
+                      std::string* warning = nullptr);
 
 /// Mean squared error over pixels and channels, and the relative MSE
 /// (each squared error over reference² + 0.01, as pbrt's imgtool).
@@ -118,8 +123,10 @@ Image render_equal_time(const Accelerator& accelerator, const RenderSettings& se
 
 /// Writes `image.variance` (the variance of each pixel's mean, per channel)
 /// as a linear EXR; `path` must end in .exr (checked before any work by
-/// check_variance_path). Temporary file renamed on success, as write_image.
+/// check_variance_path). Never half-written, as write_image.
 void write_variance_image(const Image& image, const std::string& path);
+/// The same into a prepared output's staging file (the caller commits).
+void write_variance_image(const Image& image, io::OutputFile& file);
 void check_variance_path(const std::string& argument, const std::string& path);
 
 /// The luminance (Rec. 709 weights) of image − reference, per pixel, row-major.

@@ -12,6 +12,10 @@
 #include "stratum/render/pixel_sampler.hpp"
 #include "stratum/render/scene.hpp"
 
+namespace stratum::io {
+class OutputFile;
+}
+
 namespace stratum::render {
 
 struct RenderSettings {
@@ -59,8 +63,13 @@ Image render(const Accelerator& accelerator, const RenderSettings& settings,
 
 /// Writes `image` as a linear OpenEXR (.exr) or a tonemapped sRGB 8-bit
 /// image (.png, .jpg, …: exposure 1, clamp, sRGB curve) through
-/// OpenImageIO, into a temporary file renamed on success.
+/// OpenImageIO, through an io::OutputFile (never half-written; symbolic
+/// links written through, permissions kept).
 void write_image(const Image& image, const std::string& path);
+/// Writes `image` into the staging file of `file` (prepared here if it is
+/// not yet), checked by reading it back; the caller commits (an OutputGroup
+/// commits a command's outputs together).
+void write_image(const Image& image, io::OutputFile& file);
 /// Checks, before any work, that write_image can write `path`: OpenImageIO's
 /// module loads, it writes that extension, and the folder takes new files;
 /// else stratum::invalid_argument naming `argument`.
