@@ -72,8 +72,9 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
 
 py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
                   const std::vector<std::string>& samplers, const std::vector<std::uint64_t>& counts, unsigned runs,
-                  std::uint64_t seed, unsigned threads) {
+                  std::uint64_t seed, unsigned threads, bool skip_refused_counts) {
   sa::ConvergenceRequest request;
+  request.skip_refused_counts = skip_refused_counts;
   request.integrand = {integrand, d, params};
   for (const auto& text : samplers) request.samplers.push_back(sa::parse_sampler_choice(text));
   request.counts = counts;
@@ -88,7 +89,11 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
   py::dict per_sampler;
   for (const auto& entry : result.samplers) {
     std::vector<double> mean_error, rmse, variance, seconds, efficiency;
+    std::vector<std::uint64_t> sampler_counts;
+    py::list skipped;
+    for (const auto& skip : entry.skipped) skipped.append(py::dict(py::arg("n") = skip.n, py::arg("reason") = skip.reason));
     for (const auto& row : entry.rows) {
+      sampler_counts.push_back(row.n);
       mean_error.push_back(row.mean_error);
       rmse.push_back(row.rmse);
       variance.push_back(row.variance);
@@ -97,7 +102,8 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
     }
     per_sampler[py::str(entry.sampler.name + ":" + entry.sampler.randomize)] = py::dict(
         py::arg("name") = entry.sampler.name, py::arg("randomize") = entry.sampler.randomize,
-        py::arg("mean_error") = to_array(mean_error), py::arg("rmse") = to_array(rmse),
+        py::arg("n") = py::array_t<std::uint64_t>(static_cast<py::ssize_t>(sampler_counts.size()), sampler_counts.data()),
+        py::arg("skipped") = skipped, py::arg("mean_error") = to_array(mean_error), py::arg("rmse") = to_array(rmse),
         py::arg("variance") = to_array(variance), py::arg("seconds") = to_array(seconds),
         py::arg("efficiency") = to_array(efficiency), py::arg("fitted") = entry.fitted,
         py::arg("slope") = entry.slope.slope, py::arg("slope_standard_error") = entry.slope.slope_standard_error,
@@ -114,7 +120,8 @@ void bind_integrate_converge(py::module_& m) {
   m.def("integrate", &integrate, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("sampler"),
         py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"));
   m.def("converge", &converge, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("samplers"),
-        py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"));
+        py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"));
+  m.attr("default_counts") = sa::default_counts;
   m.def("parse_counts", [](const std::string& text) { return sa::parse_counts(text); });
 }
 }  // namespace

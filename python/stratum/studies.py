@@ -90,7 +90,7 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
                               _seed(seed), threads)
 
 
-def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | None = None, seed: int = 0,
+def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = None, seed: int = 0,
              threads: int = 1, **params) -> dict:
     """Convergence study: for each sampler (a spec
     NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md; a list, or one string
@@ -98,9 +98,13 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     randomizations (run r of sampler s at N seeded with hash(seed, s, N, r)).
 
     n: "A:B" (powers of two from A to B), "A:B:F" (A, A*F, ... up to B) or a
-    list of increasing positive integers. Returns a dict: integrand, d, exact,
-    runs, n (numpy array) and samplers, a dict keyed by "name:randomizer" of
-    dicts with numpy arrays mean_error, rmse, variance, seconds, efficiency
+    list of increasing positive integers; None (the default) is "16:65536",
+    where each sampler skips the counts it refuses (2D jittered takes only
+    squares) and lists them in its "skipped" (n, reason); a count given
+    explicitly that a sampler refuses raises InvalidArgument. Returns a dict:
+    integrand, d, exact, runs, n (numpy array, the counts asked for) and
+    samplers, a dict keyed by "name:randomizer" of dicts with n (the counts
+    it ran), skipped, numpy arrays mean_error, rmse, variance, seconds, efficiency
     (1 / (variance x seconds)), and the fitted log-log slope of variance vs N
     (slope, slope_standard_error, intercept; fitted says "variance", or "mse"
     for a deterministic sampler). Numbers other than timings do not depend on
@@ -111,7 +115,10 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     samplers = list(samplers)
     if not samplers or not all(isinstance(s, str) for s in samplers):
         raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")
-    if isinstance(n, str):
+    skip_refused = n is None
+    if n is None:
+        counts = _stratum.parse_counts(_stratum.default_counts)
+    elif isinstance(n, str):
         counts = _stratum.parse_counts(n)
     else:
         values = [n] if isinstance(n, numbers.Integral) else list(np.asarray(n).ravel().tolist())
@@ -119,7 +126,7 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     runs = _small("runs", runs, "must be in [2, 1000000] (a variance needs 2 runs)", 2, 1000000)
     threads = _checks.threads(threads)
     return _stratum.converge(integrand, _dimension(d), _integrand_params(params), samplers, counts, runs, _seed(seed),
-                             threads)
+                             threads, skip_refused)
 
 
 # ============================================================================

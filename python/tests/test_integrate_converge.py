@@ -71,6 +71,20 @@ def test_integrate_error_within_standard_error():
     assert stratum.integrate("gaussian", "sobol:owen", 1024, runs=8, seed=2, threads=2)["estimate"] == q["estimate"]
 
 
+def test_converge_default_counts_work_for_every_integrand():
+    for info in stratum.integrands():
+        r = stratum.converge(info["name"], "random,jittered", runs=2)
+        rand, jit = r["samplers"]["random:none"], r["samplers"]["jittered:none"]
+        assert list(r["n"]) == [2**k for k in range(4, 17)]
+        assert list(rand["n"]) == list(r["n"]) and rand["skipped"] == []
+        assert list(jit["n"]) == [4**k for k in range(2, 9)], info["name"]
+        assert [s["n"] for s in jit["skipped"]] == [2**k for k in range(5, 16, 2)]
+        assert "invalid n = 32" in jit["skipped"][0]["reason"]
+        assert len(jit["variance"]) == 7 and np.isfinite(jit["slope"])
+    with pytest.raises(stratum.InvalidArgument, match="n = 32"):
+        stratum.converge("disk", "jittered", "16:65536", runs=2)  # given explicitly: every count must work
+
+
 def test_converge_rates_and_thread_invariance():
     one = stratum.converge("gaussian", "random,jittered", "16:4096:4", runs=64, seed=3)
     two = stratum.converge("gaussian", ["random", "jittered"], [16, 64, 256, 1024, 4096], runs=64, seed=3, threads=2)

@@ -224,10 +224,36 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   result.d = d;
   result.exact = integrand->exact();
   result.runs = request.runs;
-  for (const auto& choice : request.samplers) {
+  // The cells (sampler, N) to run: every count, or (skip_refused_counts)
+  // the counts each sampler takes.
+  struct Cell {
+    std::size_t sampler;
+    std::uint64_t n;
+  };
+  std::vector<Cell> cells;
+  for (std::size_t s = 0; s < request.samplers.size(); ++s) {
+    const SamplerChoice& choice = request.samplers[s];
     SamplerConvergence entry;
     entry.sampler = choice;
-    for (std::uint64_t n : request.counts) entry.sampler.randomize = check_sampler(choice, n, d);
+    std::size_t taken = 0;
+    for (std::uint64_t n : request.counts) {
+      try {
+        entry.sampler.randomize = check_sampler(choice, n, d);
+      } catch (const invalid_argument& error) {
+        if (!request.skip_refused_counts || error.argument() != "n") throw;
+        entry.skipped.push_back({n, error.what()});
+        continue;
+      }
+      cells.push_back({s, n});
+      ++taken;
+    }
+    if (taken == 0) {
+      std::string listed;
+      for (std::uint64_t n : request.counts) listed += (listed.empty() ? "" : ",") + std::to_string(n);
+      throw invalid_argument("n", listed,
+                             "sampler '" + choice.name + "' takes none of these counts (" +
+                                 entry.skipped.front().reason + "); give --n with counts it takes");
+    }
     result.samplers.push_back(std::move(entry));
   }
 
@@ -236,20 +262,17 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   // how TBB schedules the tasks.
   // The tasks are also a job's items: each process of a distributed job runs
   // its share, and every process then holds every slot.
-  const std::size_t per_sampler = request.counts.size() * request.runs;
-  const std::size_t tasks = request.samplers.size() * per_sampler;
+  const std::size_t tasks = cells.size() * request.runs;
   std::vector<double> slots(2 * tasks);  // (estimate, seconds) of each task
   const distributed::Share mine = distributed::share(tasks);
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t task = range.begin(); task != range.end(); ++task) {
-        const std::size_t s = task / per_sampler;
-        const std::size_t k = (task % per_sampler) / request.runs;
+        const Cell& cell = cells[task / request.runs];
         const std::size_t r = task % request.runs;
-        const std::uint64_t n = request.counts[k];
-        const RunOutcome outcome =
-            run_once(*integrand, result.samplers[s].sampler, n, hash64(request.seed, s, n, r), 1, false);
+        const RunOutcome outcome = run_once(*integrand, result.samplers[cell.sampler].sampler, cell.n,
+                                            hash64(request.seed, cell.sampler, cell.n, r), 1, false);
         slots[2 * task] = outcome.estimate;
         slots[2 * task + 1] = outcome.seconds;
       }
@@ -262,11 +285,12 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   for (std::size_t s = 0; s < result.samplers.size(); ++s) {
     auto& entry = result.samplers[s];
     std::vector<double> x, variances, mses;
-    for (std::size_t k = 0; k < request.counts.size(); ++k) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (cells[c].sampler != s) continue;
       estimators::RunningStats spread, time;
       double error_sum = 0, squared_error_sum = 0;
       for (std::size_t r = 0; r < request.runs; ++r) {
-        const std::size_t task = s * per_sampler + k * request.runs + r;
+        const std::size_t task = c * request.runs + r;
         const double error = estimate_of(task) - result.exact;
         spread.add(estimate_of(task));
         time.add(seconds_of(task));
@@ -274,7 +298,7 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
         squared_error_sum += error * error;
       }
       ConvergenceRow row;
-      row.n = request.counts[k];
+      row.n = cells[c].n;
       row.mean_error = error_sum / request.runs;
       row.rmse = std::sqrt(squared_error_sum / request.runs);
       row.variance = spread.variance();

@@ -187,6 +187,55 @@ TEST(Convergence, IntegrateOneRunAndReplicates) {
   EXPECT_EQ(integrate(request).estimate, replicated.estimate);
 }
 
+// The faces' default counts work for every integrand of the registry: each
+// sampler skips, and lists, the counts it refuses (2D jittered: non-squares),
+// runs the others, and the seeds of the cells it runs are those of a request
+// that lists only them.
+TEST(Convergence, DefaultCountsWorkForEveryIntegrand) {
+  const std::vector<std::uint64_t> defaults = parse_counts(default_counts);
+  for (const auto& info : integrands()) {
+    ConvergenceRequest request;
+    request.integrand.name = info.name;
+    request.samplers = {parse_sampler_choice("random"), parse_sampler_choice("jittered")};
+    request.counts = defaults;
+    request.runs = 2;
+    request.skip_refused_counts = true;
+    ConvergenceResult result;
+    ASSERT_NO_THROW(result = run_convergence(request)) << info.name;
+    ASSERT_EQ(result.samplers.size(), 2u);
+    EXPECT_EQ(result.samplers[0].rows.size(), defaults.size()) << info.name;
+    EXPECT_TRUE(result.samplers[0].skipped.empty()) << info.name;
+    const auto& jittered = result.samplers[1];
+    EXPECT_EQ(jittered.rows.size() + jittered.skipped.size(), defaults.size()) << info.name;
+    EXPECT_GE(jittered.rows.size(), 3u) << info.name;  // enough for a slope and its standard error
+    for (const auto& row : jittered.rows) {
+      const auto k = static_cast<std::uint64_t>(std::llround(std::sqrt(static_cast<double>(row.n))));
+      EXPECT_EQ(k * k, row.n) << info.name;  // d = 2 by default: squares only
+    }
+    for (const auto& skip : jittered.skipped) EXPECT_NE(skip.reason.find("invalid n = " + std::to_string(skip.n)), std::string::npos);
+    EXPECT_FALSE(std::isnan(jittered.slope.slope)) << info.name;
+  }
+  // Without skip_refused_counts a refused count still fails, and a sampler that
+  // takes none of the counts fails with skipping too.
+  ConvergenceRequest request;
+  request.integrand.name = "disk";
+  request.samplers = {parse_sampler_choice("jittered")};
+  request.counts = defaults;
+  request.runs = 2;
+  EXPECT_NE(error_of([&] { run_convergence(request); }).find("invalid n = 32"), std::string::npos);
+  request.skip_refused_counts = true;
+  request.counts = {32, 128};
+  EXPECT_NE(error_of([&] { run_convergence(request); }).find("takes none of these counts"), std::string::npos);
+  // The skipped cells change nothing in the others.
+  request.counts = {16, 32, 64};
+  const auto skipping = run_convergence(request);
+  request.counts = {16, 64};
+  request.skip_refused_counts = false;
+  const auto plain = run_convergence(request);
+  ASSERT_EQ(skipping.samplers[0].rows.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) EXPECT_EQ(skipping.samplers[0].rows[k].variance, plain.samplers[0].rows[k].variance);
+}
+
 TEST(Convergence, BadInput) {
   ConvergenceRequest request;
   request.integrand.name = "gaussian";

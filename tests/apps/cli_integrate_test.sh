@@ -51,6 +51,19 @@ expect_error "invalid a = x" integrate --integrand genz-gaussian -n 10 --integra
 expect_error "invalid parameter = bogus" integrate --integrand genz-gaussian -n 10 --integrand-param bogus=1
 expect_error "invalid randomize = owen" integrate --integrand disk --sampler random --randomize owen -n 10
 expect_error "invalid runs = 0" integrate --integrand disk -n 10 --runs 0
+# The default --n works for every integrand and sampler pair of the registry's
+# integrands with random and jittered: jittered (2D) skips the non-squares and says so.
+for integrand in $("$stratum" integrate --list --json | $py -c 'import json,sys; print(" ".join(e["name"] for e in json.load(sys.stdin)["integrands"]))'); do
+  "$stratum" converge --integrand "$integrand" --samplers random,jittered --runs 2 --json >"$tmp/d.json" && ok || fail "converge default --n for $integrand"
+done
+$py -c "
+import json; j = json.load(open('$tmp/d.json'))['samplers']
+assert j[0]['skipped'] == [] and len(j[0]['rows']) == 13, j[0]
+assert [r['n'] for r in j[1]['rows']] == [16, 64, 256, 1024, 4096, 16384, 65536], j[1]['rows']
+assert [s['n'] for s in j[1]['skipped']] == [32, 128, 512, 2048, 8192, 32768] and 'invalid n = 32' in j[1]['skipped'][0]['reason']" \
+  && ok || fail "converge default --n skips listed"
+"$stratum" converge --integrand disk --samplers random,jittered --runs 2 >"$tmp/out" && ok || fail "converge disk default --n"
+grep -q '^skipped N = 32,128,512,2048,8192,32768 of the default --n' "$tmp/out" && ok || fail "converge table says what it skipped"
 expect_error "invalid n = 16:100" converge --integrand disk --samplers random --n 16:100
 expect_error "invalid n = 64:16" converge --integrand disk --samplers random --n 64:16
 expect_error "invalid n = 16,8" converge --integrand disk --samplers random --n 16,8

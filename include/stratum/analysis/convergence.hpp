@@ -82,6 +82,22 @@ struct ConvergenceRequest {
   unsigned runs = 32;                 ///< R ≥ 2 randomizations per (sampler, N)
   std::uint64_t seed = 0;
   unsigned threads = 1;
+  /// false: a count a sampler refuses fails the request. true (the faces set
+  /// it for their default counts, which must work for every sampler): each
+  /// sampler skips the counts it refuses (jittered in 2D takes only squares)
+  /// and lists them in SamplerConvergence::skipped; a sampler that takes none
+  /// of the counts still fails.
+  bool skip_refused_counts = false;
+};
+
+/// The counts of the faces' default N list (`converge --n`): every power of
+/// two from 16 to 65536.
+inline constexpr const char* default_counts = "16:65536";
+
+/// A count a sampler refused (skip_refused_counts), with the sampler's reason.
+struct SkippedCount {
+  std::uint64_t n = 0;
+  std::string reason;
 };
 
 /// One (sampler, N) cell of the study.
@@ -116,6 +132,7 @@ struct SamplerConvergence {
   /// "none" with a NaN slope when fewer than 2 values are positive).
   SlopeFit slope;
   std::string fitted;
+  std::vector<SkippedCount> skipped;  ///< counts left out (skip_refused_counts); rows hold the others
 };
 
 struct ConvergenceResult {
