@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -75,7 +76,9 @@ void run_integrate(const IntegrateOptions& o) {
   if (o.json) {
     const nlohmann::json out = {{"integrand", r.integrand}, {"sampler", r.sampler}, {"randomize", r.randomize},
                                 {"d", r.d}, {"n", r.n}, {"runs", r.runs}, {"seed", o.sampler.seed},
-                                {"estimate", r.estimate}, {"standard_error", r.standard_error},
+                                {"estimate", r.estimate},
+                                {"standard_error", std::isfinite(r.standard_error) ? nlohmann::json(r.standard_error)
+                                                                                   : nlohmann::json(nullptr)},
                                 {"standard_error_kind", r.standard_error_kind}, {"exact", r.exact},
                                 {"error", r.error}, {"seconds", r.seconds}, {"run_estimates", r.run_estimates}};
     fmt::print("{}\n", out.dump(2));
@@ -83,10 +86,15 @@ void run_integrate(const IntegrateOptions& o) {
   }
   fmt::print("integrand       {} (d = {})\nsampler         {}:{} n = {} runs = {}\n", r.integrand, r.d, r.sampler,
              r.randomize, r.n, r.runs);
-  fmt::print("estimate        {:.17g}\nstandard error  {:.6g} ({})\nexact           {:.17g}\nerror           {:.6g}\n",
-             r.estimate, r.standard_error,
-             r.standard_error_kind == "iid" ? "iid: s/sqrt(n) of one point set" : "from the runs' replicates",
-             r.exact, r.error);
+  const std::string standard_error =
+      r.standard_error_kind == "identical-runs"
+          ? fmt::format("unavailable: the {} runs gave identical estimates ({}:{} is not randomized; choose a "
+                        "randomizer, e.g. :cp)",
+                        r.runs, r.sampler, r.randomize)
+          : fmt::format("{:.6g} ({})", r.standard_error,
+                        r.standard_error_kind == "iid" ? "iid: s/sqrt(n) of one point set" : "from the runs' replicates");
+  fmt::print("estimate        {:.17g}\nstandard error  {}\nexact           {:.17g}\nerror           {:.6g}\n",
+             r.estimate, standard_error, r.exact, r.error);
 }
 }  // namespace
 

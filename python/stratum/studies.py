@@ -78,7 +78,9 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     (standard_error_kind "iid": right for i.i.d. points, only indicative for
     stratified or QMC points). runs >= 2: independent randomizations, run r
     seeded with hash(seed, r); standard_error comes from the replicates
-    ("replicates"). Extra keyword arguments are the integrand's parameters
+    ("replicates"), or is nan with standard_error_kind "identical-runs" when
+    every run gave the same estimate (a sampler that is not randomized, e.g.
+    "grid", "zaremba", "hammersley:none": no error estimate, never a false 0). Extra keyword arguments are the integrand's parameters
     (numbers or arrays, e.g. a=[2, 3, 4]). Returns a dict with estimate,
     standard_error, standard_error_kind, exact, error, seconds, run_estimates
     (numpy array) and the resolved integrand, sampler, randomize, d, n, runs.

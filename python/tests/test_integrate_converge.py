@@ -85,6 +85,15 @@ def test_converge_default_counts_work_for_every_integrand():
         stratum.converge("disk", "jittered", "16:65536", runs=2)  # given explicitly: every count must work
 
 
+def test_integrate_never_reports_a_false_zero_standard_error():
+    r = stratum.integrate("step", "hammersley:owen", 64, runs=16)
+    assert r["standard_error_kind"] == "replicates" and r["standard_error"] > 0
+    assert abs(r["error"]) < 4.07 * r["standard_error"]  # t_15 at 0.001
+    for spec in ("grid", "zaremba", "hammersley:none", "fibonacci"):
+        r = stratum.integrate("step", spec, 64, runs=16)
+        assert r["standard_error_kind"] == "identical-runs" and math.isnan(r["standard_error"]), spec
+
+
 def test_converge_rates_and_thread_invariance():
     one = stratum.converge("gaussian", "random,jittered", "16:4096:4", runs=64, seed=3)
     two = stratum.converge("gaussian", ["random", "jittered"], [16, 64, 256, 1024, 4096], runs=64, seed=3, threads=2)

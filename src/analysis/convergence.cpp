@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <chrono>
@@ -201,6 +202,13 @@ IntegrationResult integrate(const IntegrationRequest& request) {
     result.estimate = replicates.estimate;
     result.standard_error = replicates.standard_error;
     result.standard_error_kind = "replicates";
+    // Runs that do not differ (a deterministic sampler or randomizer) say
+    // nothing about the error: no standard error rather than a false 0.
+    if (std::all_of(result.run_estimates.begin(), result.run_estimates.end(),
+                    [&](double v) { return v == result.run_estimates.front(); })) {
+      result.standard_error = std::numeric_limits<double>::quiet_NaN();
+      result.standard_error_kind = "identical-runs";
+    }
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.error = result.estimate - result.exact;

@@ -23,6 +23,15 @@ r = json.load(open('$tmp/g.json'))
 exact = math.prod(math.sqrt(math.pi)/(2*a)*(math.erf(a*0.8)+math.erf(a*0.2)) for a in (2,3,4))
 assert abs(r['exact']-exact) < 1e-14 and r['d'] == 3 and r['standard_error_kind'] == 'iid', r
 assert abs(r['error']) < 4*r['standard_error'], r" && ok || fail "genz-gaussian exact and error"
+# Runs that do not differ give no standard error (never a false 0); Hammersley's i/N is randomized.
+"$stratum" integrate --integrand step -s hammersley:owen -n 64 --runs 16 --json >"$tmp/h.json" && ok || fail "integrate hammersley:owen"
+$py -c "import json; r=json.load(open('$tmp/h.json')); assert r['standard_error'] > 0 and abs(r['error']) < 4.07*r['standard_error'], r" \
+  && ok || fail "hammersley:owen standard error"
+"$stratum" integrate --integrand step -s grid -n 64 --runs 16 >"$tmp/out" && ok || fail "integrate grid"
+grep -q '^standard error  unavailable: the 16 runs gave identical estimates (grid:none' "$tmp/out" && ok || fail "grid: $(cat "$tmp/out")"
+"$stratum" integrate --integrand step -s zaremba -n 64 --runs 4 --json >"$tmp/z.json" && ok || fail "integrate zaremba"
+$py -c "import json; r=json.load(open('$tmp/z.json')); assert r['standard_error'] is None and r['standard_error_kind'] == 'identical-runs', r" \
+  && ok || fail "zaremba: standard_error null"
 "$stratum" integrate --integrand step --sampler random -n 1000 | grep -q '^exact *0.3183098861837906' && ok || fail "text output"
 
 # converge: JSON shape, thread invariance, the slope of random sampling near -1.

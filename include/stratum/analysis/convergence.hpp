@@ -60,8 +60,11 @@ struct IntegrationResult {
   unsigned runs = 0;
   double estimate = 0;        ///< mean over runs of each run's mean of f
   double standard_error = 0;  ///< runs ≥ 2: from the replicates (RQMC); runs = 1: s/√n of the n values
-  /// "replicates" (valid for any unbiased randomized sampler) or "iid" (s/√n:
-  /// right for `random`, only indicative for stratified and QMC points).
+  /// "replicates" (valid for any unbiased randomized sampler), "iid" (s/√n:
+  /// right for `random`, only indicative for stratified and QMC points), or
+  /// "identical-runs": every run gave the same estimate (a deterministic
+  /// sampler such as grid:none, zaremba:none, hammersley:none), so there is
+  /// no error estimate and standard_error is NaN (never a false 0).
   std::string standard_error_kind;
   double exact = 0;
   double error = 0;  ///< estimate − exact
