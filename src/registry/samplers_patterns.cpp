@@ -170,10 +170,11 @@ std::vector<SamplerInfo> patterns() {
   list.push_back({
       .name = "random",
       .kind = "pattern",
-      .description = "independent uniform points from a counter-based generator",
+      .description = "independent uniform points from a counter-based generator; point i depends only on (seed, i), "
+                     "so start=K continues a run",
       .min_dim = 1,
       .max_dim = 1u << 16,
-      .properties = {"index-addressable", "unstratified"},
+      .properties = {"index-addressable", "progressive", "unstratified"},
       .randomizers = {"none"},
       .counts = "any n >= 1",
       .params = {},
@@ -182,8 +183,9 @@ std::vector<SamplerInfo> patterns() {
       .generate =
           [](const SamplerRequest& request) {
             const RandomPattern random(request.seed);
+            const std::uint64_t start = request.start;
             return fill_index_addressable(*request.n, request.d, request.threads,
-                                          [&](std::uint64_t i, unsigned j) { return random.sample(i, j); });
+                                          [&](std::uint64_t i, unsigned j) { return random.sample(start + i, j); });
           },
   });
 

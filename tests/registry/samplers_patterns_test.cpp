@@ -150,5 +150,26 @@ TEST(PatternRegistry, NQueensDefaultIsUnbiased) {
   testing::expect_unbiased("n-queens default, n = 8", estimates, 0.18, 0.001);
 }
 
+// random is index-addressable and progressive: point i of start K is point
+// K + i of a longer run, also past 2^32; the other finite patterns refuse start.
+TEST(PatternRegistry, RandomTakesStart) {
+  SamplerRequest longer = request_of(40, 3, 9);
+  longer.start = (std::uint64_t{1} << 32) - 10;
+  const PointSet all = generate_points("random", longer);
+  SamplerRequest tail = request_of(25, 3, 9);
+  tail.start = longer.start + 15;
+  const PointSet part = generate_points("random", tail);
+  for (std::size_t k = 0; k < 25 * 3; ++k) EXPECT_EQ(part.data[k], all.data[15 * 3 + k]) << k;
+  SamplerRequest from_zero = request_of(20, 3, 9);
+  const PointSet head = generate_points("random", from_zero);
+  from_zero.start = 5;
+  from_zero.n = 15;
+  const PointSet shifted = generate_points("random", from_zero);
+  for (std::size_t k = 0; k < 15 * 3; ++k) EXPECT_EQ(shifted.data[k], head.data[5 * 3 + k]) << k;
+  SamplerRequest jittered = request_of(16, 2);
+  jittered.start = 1;
+  EXPECT_NE(error_of("jittered", jittered).find("invalid start = 1: jittered is a finite pattern"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace stratum
