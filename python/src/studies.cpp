@@ -48,7 +48,7 @@ py::list integrand_list() {
 
 py::dict integrate(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
                    const std::string& sampler, const std::string& randomize, std::uint64_t n, unsigned runs,
-                   std::uint64_t seed, unsigned threads) {
+                   std::uint64_t seed, unsigned threads, double confidence) {
   sa::IntegrationRequest request;
   request.integrand = {integrand, d, params};
   const SamplerSpec spec = combine_sampler_options(sampler, {}, randomize);
@@ -57,6 +57,7 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
   request.runs = runs;
   request.seed = seed;
   request.threads = threads;
+  request.confidence = confidence;
   sa::IntegrationResult r;
   {
     py::gil_scoped_release release;
@@ -67,7 +68,10 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
                   py::arg("estimate") = r.estimate, py::arg("standard_error") = r.standard_error,
                   py::arg("standard_error_kind") = r.standard_error_kind, py::arg("exact") = r.exact,
                   py::arg("error") = r.error, py::arg("seconds") = r.seconds,
-                  py::arg("run_estimates") = to_array(r.run_estimates));
+                  py::arg("run_estimates") = to_array(r.run_estimates), py::arg("confidence") = r.confidence,
+                  py::arg("interval") = py::make_tuple(r.interval_low, r.interval_high),
+                  py::arg("half_width") = r.half_width, py::arg("seconds_per_run") = r.seconds_per_run,
+                  py::arg("efficiency") = r.efficiency);
 }
 
 py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
@@ -118,7 +122,8 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
 void bind_integrate_converge(py::module_& m) {
   m.def("integrands", &integrand_list, "Every test integrand as a dict");
   m.def("integrate", &integrate, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("sampler"),
-        py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"));
+        py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"),
+        py::arg("confidence"));
   m.def("converge", &converge, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("samplers"),
         py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"));
   m.attr("default_counts") = sa::default_counts;

@@ -69,7 +69,8 @@ def integrands() -> list[dict]:
 
 
 def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | None = None, seed: int = 0,
-              randomize: str | None = None, runs: int = 1, threads: int = 1, **params) -> dict:
+              randomize: str | None = None, runs: int = 1, threads: int = 1, confidence: float = 0.95,
+              **params) -> dict:
     """Estimate `integrand` over [0,1]^d with `n` points of `sampler`, a
     spec NAME[(KEY=VALUE,...)][:RANDOMIZER] ("sobol:owen",
     "jittered(strata=4x8)"; docs/samplers.md).
@@ -83,13 +84,21 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     "grid", "zaremba", "hammersley:none": no error estimate, never a false 0). Extra keyword arguments are the integrand's parameters
     (numbers or arrays, e.g. a=[2, 3, 4]). Returns a dict with estimate,
     standard_error, standard_error_kind, exact, error, seconds, run_estimates
-    (numpy array) and the resolved integrand, sampler, randomize, d, n, runs.
+    (numpy array) and the resolved integrand, sampler, randomize, d, n, runs;
+    interval (low, high), the Student-t confidence interval at level
+    `confidence` (estimate +- t_{runs-1} x standard_error over the runs; with
+    runs=1, t_{n-1} over the n values), its half_width, and efficiency
+    1 / (variance x seconds) with seconds_per_run, as converge has (nan
+    without a standard error).
     """
+    if isinstance(confidence, bool) or not isinstance(confidence, numbers.Real) or not 0 < confidence < 1:
+        raise InvalidArgument(f"invalid confidence = {confidence!r}: must be a level strictly between 0 and 1, "
+                              "e.g. 0.95")
     n = _count("n", n, "must be a positive integer")
     runs = _small("runs", runs, "must be in [1, 1000000]", 1, 1000000)
     threads = _checks.threads(threads)
     return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize or "", n, runs,
-                              _seed(seed), threads)
+                              _seed(seed), threads, float(confidence))
 
 
 def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = None, seed: int = 0,

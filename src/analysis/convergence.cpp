@@ -6,6 +6,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <charconv>
@@ -167,6 +169,8 @@ IntegrationResult integrate(const IntegrationRequest& request) {
   require(request.n >= 1, "n", request.n, "must be a positive integer");
   require(request.runs >= 1 && request.runs <= max_runs, "runs", request.runs, "must be in [1, 1000000]");
   require(request.threads >= 1 && request.threads <= max_threads, "threads", request.threads, "must be in [1, 1024]");
+  require(request.confidence > 0 && request.confidence < 1, "confidence", request.confidence,
+          "must be a level strictly between 0 and 1, e.g. 0.95");
   IntegrationResult result;
   result.randomize = check_sampler(request.sampler, request.n, d);
   result.integrand = find_integrand(request.integrand.name).name;
@@ -181,23 +185,30 @@ IntegrationResult integrate(const IntegrationRequest& request) {
     const RunOutcome outcome = run_once(*integrand, request.sampler, request.n, request.seed, request.threads, true);
     result.run_estimates = {outcome.estimate};
     result.estimate = outcome.estimate;
-    result.standard_error = outcome.values.standard_error();
+    result.standard_error = request.n >= 2 ? outcome.values.standard_error() : std::numeric_limits<double>::quiet_NaN();
     result.standard_error_kind = "iid";
+    result.seconds_per_run = outcome.seconds;
   } else {
     // Independent randomizations, run r seeded with hash64(seed, r): the RQMC replicate estimate.
     // The runs are a job's items: a distributed job's processes each run their share.
     result.run_estimates.resize(request.runs);
+    std::vector<double> run_seconds(request.runs);
     const distributed::Share mine = distributed::share(request.runs);
     tbb::task_arena arena(static_cast<int>(request.threads));
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
                         [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t r = range.begin(); r != range.end(); ++r)
-                            result.run_estimates[r] = run_once(*integrand, request.sampler, request.n,
-                                                               hash64(request.seed, r), 1, false).estimate;
+                          for (std::size_t r = range.begin(); r != range.end(); ++r) {
+                            const RunOutcome outcome =
+                                run_once(*integrand, request.sampler, request.n, hash64(request.seed, r), 1, false);
+                            result.run_estimates[r] = outcome.estimate;
+                            run_seconds[r] = outcome.seconds;
+                          }
                         });
     });
     distributed::gather_shares(result.run_estimates, request.runs);
+    distributed::gather_shares(run_seconds, request.runs);
+    for (double s : run_seconds) result.seconds_per_run += s / request.runs;
     const auto replicates = estimators::rqmc_estimate(result.run_estimates);
     result.estimate = replicates.estimate;
     result.standard_error = replicates.standard_error;
@@ -212,6 +223,21 @@ IntegrationResult integrate(const IntegrationRequest& request) {
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.error = result.estimate - result.exact;
+  // The Student-t interval: ν = runs − 1 over the replicates, n − 1 over one set's values.
+  result.confidence = request.confidence;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  result.half_width = result.interval_low = result.interval_high = result.efficiency = nan;
+  if (std::isfinite(result.standard_error)) {
+    const double dof = request.runs >= 2 ? request.runs - 1.0 : static_cast<double>(request.n) - 1.0;
+    const double t = boost::math::quantile(boost::math::students_t(dof), (1 + request.confidence) / 2);
+    result.half_width = t * result.standard_error;
+    result.interval_low = result.estimate - result.half_width;
+    result.interval_high = result.estimate + result.half_width;
+    // One run's variance: the replicates' (SE² · runs), or s²/n for one set.
+    const double variance = result.standard_error * result.standard_error * (request.runs >= 2 ? request.runs : 1);
+    result.seconds_per_run = std::max(result.seconds_per_run, 1e-9);  // a clock tick at least, as converge
+    result.efficiency = estimators::efficiency(variance, result.seconds_per_run);
+  }
   return result;
 }
 

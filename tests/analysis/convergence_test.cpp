@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/math/distributions/binomial.hpp>
+#include <boost/math/distributions/students_t.hpp>
+
 #include "../registry/error_of.hpp"
 
 #include <cmath>
@@ -234,6 +237,50 @@ TEST(Convergence, DefaultCountsWorkForEveryIntegrand) {
   const auto plain = run_convergence(request);
   ASSERT_EQ(skipping.samplers[0].rows.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) EXPECT_EQ(skipping.samplers[0].rows[k].variance, plain.samplers[0].rows[k].variance);
+}
+
+// The RQMC interval estimate ± t_{R−1} · SE covers the exact value at its
+// level: 400 seeds of random on a smooth integrand (gaussian, n = 64, 8 runs);
+// the count of covering intervals lies in the binomial(400, 0.95) band of
+// probability 0.999. Its half-width scales with the Student-t quantile, and
+// the efficiency is 1 / (one run's variance × one run's seconds).
+TEST(Convergence, IntegrateIntervalCoversAtItsLevel) {
+  IntegrationRequest request;
+  request.integrand.name = "gaussian";
+  request.sampler = parse_sampler_choice("random");
+  request.n = 64;
+  request.runs = 8;
+  int covered = 0;
+  for (std::uint64_t seed = 0; seed < 400; ++seed) {
+    request.seed = seed;
+    const auto r = integrate(request);
+    ASSERT_NEAR(r.half_width, r.interval_high - r.estimate, 1e-15);
+    covered += r.interval_low <= r.exact && r.exact <= r.interval_high ? 1 : 0;
+  }
+  const boost::math::binomial band(400, 0.95);
+  EXPECT_GE(covered, boost::math::quantile(band, 0.0005));
+  EXPECT_LE(covered, boost::math::quantile(boost::math::complement(band, 0.0005)));
+  request.seed = 1;
+  const auto wide = integrate(request);
+  request.confidence = 0.5;
+  const auto narrow = integrate(request);
+  const boost::math::students_t t7(7);
+  EXPECT_NEAR(narrow.half_width / wide.half_width,
+              boost::math::quantile(t7, 0.75) / boost::math::quantile(t7, 0.975), 1e-12);
+  EXPECT_EQ(narrow.confidence, 0.5);
+  EXPECT_NEAR(wide.half_width, 2.3646242515927853 * wide.standard_error, 1e-12 * wide.standard_error);  // t_{7, 0.975}
+  EXPECT_NEAR(wide.efficiency, 1 / (wide.standard_error * wide.standard_error * 8 * wide.seconds_per_run),
+              1e-9 * wide.efficiency);
+  EXPECT_GT(wide.seconds_per_run, 0.0);
+  for (double level : {0.0, 1.0, -0.5, std::nan("")}) {
+    request.confidence = level;
+    EXPECT_NE(error_of([&] { integrate(request); }).find("invalid confidence"), std::string::npos) << level;
+  }
+  // No standard error, no interval: identical runs.
+  request.confidence = 0.95;
+  request.sampler = parse_sampler_choice("grid");
+  const auto fixed = integrate(request);
+  EXPECT_TRUE(std::isnan(fixed.interval_low) && std::isnan(fixed.half_width) && std::isnan(fixed.efficiency));
 }
 
 TEST(Convergence, BadInput) {

@@ -32,6 +32,17 @@ grep -q '^standard error  unavailable: the 16 runs gave identical estimates (gri
 "$stratum" integrate --integrand step -s zaremba -n 64 --runs 4 --json >"$tmp/z.json" && ok || fail "integrate zaremba"
 $py -c "import json; r=json.load(open('$tmp/z.json')); assert r['standard_error'] is None and r['standard_error_kind'] == 'identical-runs', r" \
   && ok || fail "zaremba: standard_error null"
+# The RQMC interval and the efficiency: t_{7, 0.975} = 2.3646 standard errors by default, t_{7, 0.95} at --confidence 0.9.
+"$stratum" integrate --integrand gaussian -s random -n 64 --runs 8 --seed 2 --confidence 0.9 --json >"$tmp/t.json" && ok || fail "integrate --confidence"
+$py -c "
+import json; r = json.load(open('$tmp/t.json'))
+assert r['confidence'] == 0.9 and abs(r['half_width'] - 1.8945786050900074 * r['standard_error']) < 1e-12 * r['standard_error'], r
+assert abs(r['interval'][0] - (r['estimate'] - r['half_width'])) < 1e-15 and abs(r['interval'][1] - (r['estimate'] + r['half_width'])) < 1e-15
+assert abs(r['efficiency'] * r['standard_error']**2 * 8 * r['seconds_per_run'] - 1) < 1e-9, r" && ok || fail "interval and efficiency values"
+"$stratum" integrate --integrand gaussian -s random -n 64 --runs 8 >"$tmp/out" && ok || fail "integrate text"
+grep -q '^95% interval \[.*Student-t over 8 runs' "$tmp/out" && grep -q '^efficiency ' "$tmp/out" && ok || fail "text interval: $(cat "$tmp/out")"
+expect_error "invalid confidence = 1.5: must be a level strictly between 0 and 1" integrate --integrand disk -n 10 --confidence 1.5
+expect_error "invalid confidence = 0" integrate --integrand disk -n 10 --confidence 0
 "$stratum" integrate --integrand step --sampler random -n 1000 | grep -q '^exact *0.3183098861837906' && ok || fail "text output"
 
 # converge: JSON shape, thread invariance, the slope of random sampling near -1.

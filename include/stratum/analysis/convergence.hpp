@@ -49,6 +49,7 @@ struct IntegrationRequest {
   unsigned runs = 1;    ///< independent randomizations (seeds hash64(seed, 0, n, r))
   std::uint64_t seed = 0;
   unsigned threads = 1;
+  double confidence = 0.95;  ///< level of the confidence interval, in (0, 1)
 };
 
 struct IntegrationResult {
@@ -70,6 +71,21 @@ struct IntegrationResult {
   double error = 0;  ///< estimate − exact
   double seconds = 0;  ///< wall time for all runs (generation + evaluation)
   std::vector<double> run_estimates;
+  /// The confidence interval estimate ± t · standard_error at level
+  /// `confidence`, t the Student-t quantile t_{ν, (1 + confidence)/2}: over
+  /// the runs (ν = runs − 1; the RQMC interval, valid for any unbiased
+  /// randomized sampler since the runs are independent, exact when their
+  /// estimates are normal and asymptotically in runs otherwise), or with
+  /// runs = 1 from the n values (ν = n − 1; right for `random` only). NaN
+  /// bounds when there is no standard error (identical runs, n = 1).
+  double confidence = 0.95;
+  double interval_low = 0, interval_high = 0;
+  double half_width = 0;  ///< t · standard_error
+  /// 1 / (variance × seconds) as in converge: the variance of one run's
+  /// estimate (runs ≥ 2: of the run estimates; runs = 1: s²/n) and the mean
+  /// wall time of one run; NaN without a standard error, +inf when it is 0.
+  double efficiency = 0;
+  double seconds_per_run = 0;
 };
 
 /// Validates everything first (names, d, n ≥ 1, runs ≥ 1, threads ≥ 1, the
