@@ -20,7 +20,8 @@ namespace {
 namespace sa = stratum::analysis;
 
 struct ConvergeOptions {
-  std::string integrand, samplers, counts = "16:65536", plot;
+  std::string integrand, samplers, counts = sa::default_counts, plot;
+  bool counts_given = false;  ///< --n given: every sampler must take every count
   std::optional<std::int64_t> d;
   std::uint64_t seed = 0;
   std::int64_t runs = 32, threads = 1;
@@ -30,6 +31,12 @@ struct ConvergeOptions {
 };
 
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+nlohmann::json skipped_json(const sa::SamplerConvergence& entry) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& skip : entry.skipped) out.push_back({{"n", skip.n}, {"reason", skip.reason}});
+  return out;
+}
 
 nlohmann::json to_json(const sa::ConvergenceResult& result) {
   nlohmann::json samplers = nlohmann::json::array();
@@ -41,7 +48,7 @@ nlohmann::json to_json(const sa::ConvergenceResult& result) {
     samplers.push_back({{"name", entry.sampler.name}, {"randomize", entry.sampler.randomize}, {"rows", rows},
                         {"fitted", entry.fitted}, {"slope", number(entry.slope.slope)},
                         {"slope_standard_error", number(entry.slope.slope_standard_error)},
-                        {"intercept", number(entry.slope.intercept)}});
+                        {"intercept", number(entry.slope.intercept)}, {"skipped", skipped_json(entry)}});
   }
   return {{"integrand", result.integrand}, {"d", result.d}, {"exact", result.exact}, {"runs", result.runs},
           {"samplers", samplers}};
@@ -69,6 +76,7 @@ void run_converge(const ConvergeOptions& o) {
   request.runs = static_cast<unsigned>(o.runs);
   request.seed = o.seed;
   request.threads = static_cast<unsigned>(o.threads);
+  request.skip_refused_counts = !o.counts_given;
   const sa::ConvergenceResult result = sa::run_convergence(request);
   const nlohmann::json data = to_json(result);
   if (figure) plot::write_plot("converge", data, *figure);
@@ -78,6 +86,12 @@ void run_converge(const ConvergeOptions& o) {
   for (const auto& entry : result.samplers) {
     fmt::print("\n{}:{}  slope of log {} vs log N: {:.3f} ± {:.3f}\n", entry.sampler.name, entry.sampler.randomize,
                entry.fitted, entry.slope.slope, entry.slope.slope_standard_error);
+    if (!entry.skipped.empty()) {
+      std::string counts;
+      for (const auto& skip : entry.skipped) counts += (counts.empty() ? "" : ",") + std::to_string(skip.n);
+      fmt::print("skipped N = {} of the default --n (this sampler refuses them: {})\n", counts,
+                 entry.skipped.front().reason);
+    }
     fmt::print("{:>10} {:>12} {:>12} {:>12} {:>12} {:>12}\n", "N", "mean error", "RMSE", "variance", "seconds",
                "efficiency");
     for (const auto& row : entry.rows)
@@ -95,8 +109,11 @@ void add_converge_command(CLI::App& app) {
                       "sampler specs A,B,... each NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md); the list "
                       "splits on commas outside parentheses")
       ->required();
-  command->add_option("--n", o->counts, "A:B (powers of two), A:B:F (times F) or a comma list")
-      ->capture_default_str();
+  auto* counts = command->add_option("--n", o->counts,
+                                     "A:B (powers of two), A:B:F (times F) or a comma list; with the default, each "
+                                     "sampler skips the counts it refuses (e.g. non-squares for 2D jittered) and "
+                                     "says so")
+                     ->capture_default_str();
   command->add_option("-d", o->d, "dimension (default: the integrand's)");
   command->add_option("--runs", o->runs, "independent randomizations per N")->capture_default_str();
   add_seed_option(*command, o->seed, "seed; run r of sampler s at N uses hash(seed, s, N, r)");
@@ -107,7 +124,10 @@ void add_converge_command(CLI::App& app) {
   add_spec_footer(*command);
   command->add_flag("--json", o->json, "print JSON");
   command->add_option("--plot", o->plot, "write a log-log figure of variance vs N (PNG)");
-  command->callback([o] { run_converge(*o); });
+  command->callback([o, counts] {
+    o->counts_given = counts->count() > 0;
+    run_converge(*o);
+  });
 }
 
 }  // namespace stratum::cli

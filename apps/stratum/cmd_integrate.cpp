@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -22,6 +23,7 @@ struct IntegrateOptions {
   SamplerOptions sampler{"random"};
   std::optional<std::int64_t> n, d;
   std::int64_t runs = 1, threads = 1;
+  double confidence = 0.95;
   std::vector<std::string> integrand_params;
   bool json = false, list = false;
 };
@@ -44,6 +46,9 @@ void print_integrands(bool json) {
   }
   if (json) fmt::print("{}\n", nlohmann::json{{"integrands", out}}.dump(2));
 }
+
+/// A number for JSON, null when not finite (no standard error, or efficiency +inf).
+nlohmann::json finite(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
 /// --integrand-param key=v1,v2 items into integrand parameters.
 sa::IntegrandParams parse_integrand_params(const std::vector<std::string>& items) {
@@ -71,22 +76,39 @@ void run_integrate(const IntegrateOptions& o) {
   request.runs = static_cast<unsigned>(o.runs);
   request.seed = o.sampler.seed;
   request.threads = static_cast<unsigned>(o.threads);
+  request.confidence = o.confidence;
   const sa::IntegrationResult r = sa::integrate(request);
   if (o.json) {
     const nlohmann::json out = {{"integrand", r.integrand}, {"sampler", r.sampler}, {"randomize", r.randomize},
                                 {"d", r.d}, {"n", r.n}, {"runs", r.runs}, {"seed", o.sampler.seed},
-                                {"estimate", r.estimate}, {"standard_error", r.standard_error},
+                                {"estimate", r.estimate},
+                                {"standard_error", std::isfinite(r.standard_error) ? nlohmann::json(r.standard_error)
+                                                                                   : nlohmann::json(nullptr)},
                                 {"standard_error_kind", r.standard_error_kind}, {"exact", r.exact},
-                                {"error", r.error}, {"seconds", r.seconds}, {"run_estimates", r.run_estimates}};
+                                {"error", r.error}, {"seconds", r.seconds}, {"run_estimates", r.run_estimates},
+                                {"confidence", r.confidence}, {"interval", {finite(r.interval_low), finite(r.interval_high)}},
+                                {"half_width", finite(r.half_width)}, {"seconds_per_run", r.seconds_per_run},
+                                {"efficiency", finite(r.efficiency)}};
     fmt::print("{}\n", out.dump(2));
     return;
   }
   fmt::print("integrand       {} (d = {})\nsampler         {}:{} n = {} runs = {}\n", r.integrand, r.d, r.sampler,
              r.randomize, r.n, r.runs);
-  fmt::print("estimate        {:.17g}\nstandard error  {:.6g} ({})\nexact           {:.17g}\nerror           {:.6g}\n",
-             r.estimate, r.standard_error,
-             r.standard_error_kind == "iid" ? "iid: s/sqrt(n) of one point set" : "from the runs' replicates",
-             r.exact, r.error);
+  const std::string standard_error =
+      r.standard_error_kind == "identical-runs"
+          ? fmt::format("unavailable: the {} runs gave identical estimates ({}:{} is not randomized; choose a "
+                        "randomizer, e.g. :cp)",
+                        r.runs, r.sampler, r.randomize)
+          : fmt::format("{:.6g} ({})", r.standard_error,
+                        r.standard_error_kind == "iid" ? "iid: s/sqrt(n) of one point set" : "from the runs' replicates");
+  fmt::print("estimate        {:.17g}\nstandard error  {}\nexact           {:.17g}\nerror           {:.6g}\n",
+             r.estimate, standard_error, r.exact, r.error);
+  if (std::isfinite(r.half_width))
+    fmt::print("{:.4g}% interval [{:.10g}, {:.10g}] (estimate ± {:.4g}, Student-t over {})\n"
+               "efficiency      {:.6g} (1 / (variance × seconds), {:.4g} s per run)\n",
+               100 * r.confidence, r.interval_low, r.interval_high, r.half_width,
+               r.runs >= 2 ? fmt::format("{} runs", r.runs) : std::string("the n values: iid"), r.efficiency,
+               r.seconds_per_run);
 }
 }  // namespace
 
@@ -101,6 +123,9 @@ void add_integrate_command(CLI::App& app) {
   command->add_option("--runs", o->runs, "independent randomizations (>= 2: replicate standard error)")
       ->capture_default_str();
   add_threads_option(*command, o->threads, "threads");
+  command->add_option("--confidence", o->confidence,
+                      "level of the confidence interval, in (0, 1) (Student-t over the runs' replicates)")
+      ->capture_default_str();
   command->add_option("--integrand-param", o->integrand_params, "integrand parameter KEY=V1,V2,... (repeatable)");
   command->add_flag("--json", o->json, "print JSON");
   command->add_flag("--list", o->list, "list the integrands and exit");

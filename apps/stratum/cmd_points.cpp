@@ -53,7 +53,7 @@ void add_points_command(CLI::App& app) {
   command
       ->add_option_function<std::string>(
           "--start", [options](const std::string& text) { options->start = parse_uint64("start", text); },
-          "index of the first point (sequences only; an integer in [0, 2^64))")
+          "index of the first point (sequences and random; an integer in [0, 2^64))")
       ->type_name("UINT")
       ->default_str("0");
   command->add_option("--radius", options->radius, "Poisson-disk radius");

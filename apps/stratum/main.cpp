@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   stratum::cli::DistributedSession session(argc, argv);  // an MPI rank under mpirun/srun
   CLI::App app{"stratum: Monte Carlo and quasi-Monte Carlo sampling toolkit"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("stratum ") + STRATUM_VERSION_TEXT, "print the version and exit");
   stratum::cli::add_samplers_command(app);
   stratum::cli::add_points_command(app);
   stratum::cli::add_warp_command(app);
@@ -33,7 +34,7 @@ int main(int argc, char** argv) {
 #ifdef STRATUM_HAS_REPORT
   stratum::cli::add_report_command(app);
 #endif
-  auto* study = app.add_subcommand("study", "Reproduce a study of the lecture (see `stratum study --help`)");
+  auto* study = app.add_subcommand("study", "Reproduce a study of the lecture: mitchell, dimension or importance");
   study->require_subcommand(1);
   stratum::cli::add_study_mitchell_command(*study);
   stratum::cli::add_study_dimension_command(*study);

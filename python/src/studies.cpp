@@ -48,7 +48,7 @@ py::list integrand_list() {
 
 py::dict integrate(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
                    const std::string& sampler, const std::string& randomize, std::uint64_t n, unsigned runs,
-                   std::uint64_t seed, unsigned threads) {
+                   std::uint64_t seed, unsigned threads, double confidence) {
   sa::IntegrationRequest request;
   request.integrand = {integrand, d, params};
   const SamplerSpec spec = combine_sampler_options(sampler, {}, randomize);
@@ -57,6 +57,7 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
   request.runs = runs;
   request.seed = seed;
   request.threads = threads;
+  request.confidence = confidence;
   sa::IntegrationResult r;
   {
     py::gil_scoped_release release;
@@ -67,13 +68,17 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
                   py::arg("estimate") = r.estimate, py::arg("standard_error") = r.standard_error,
                   py::arg("standard_error_kind") = r.standard_error_kind, py::arg("exact") = r.exact,
                   py::arg("error") = r.error, py::arg("seconds") = r.seconds,
-                  py::arg("run_estimates") = to_array(r.run_estimates));
+                  py::arg("run_estimates") = to_array(r.run_estimates), py::arg("confidence") = r.confidence,
+                  py::arg("interval") = py::make_tuple(r.interval_low, r.interval_high),
+                  py::arg("half_width") = r.half_width, py::arg("seconds_per_run") = r.seconds_per_run,
+                  py::arg("efficiency") = r.efficiency);
 }
 
 py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
                   const std::vector<std::string>& samplers, const std::vector<std::uint64_t>& counts, unsigned runs,
-                  std::uint64_t seed, unsigned threads) {
+                  std::uint64_t seed, unsigned threads, bool skip_refused_counts) {
   sa::ConvergenceRequest request;
+  request.skip_refused_counts = skip_refused_counts;
   request.integrand = {integrand, d, params};
   for (const auto& text : samplers) request.samplers.push_back(sa::parse_sampler_choice(text));
   request.counts = counts;
@@ -88,7 +93,11 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
   py::dict per_sampler;
   for (const auto& entry : result.samplers) {
     std::vector<double> mean_error, rmse, variance, seconds, efficiency;
+    std::vector<std::uint64_t> sampler_counts;
+    py::list skipped;
+    for (const auto& skip : entry.skipped) skipped.append(py::dict(py::arg("n") = skip.n, py::arg("reason") = skip.reason));
     for (const auto& row : entry.rows) {
+      sampler_counts.push_back(row.n);
       mean_error.push_back(row.mean_error);
       rmse.push_back(row.rmse);
       variance.push_back(row.variance);
@@ -97,7 +106,8 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
     }
     per_sampler[py::str(entry.sampler.name + ":" + entry.sampler.randomize)] = py::dict(
         py::arg("name") = entry.sampler.name, py::arg("randomize") = entry.sampler.randomize,
-        py::arg("mean_error") = to_array(mean_error), py::arg("rmse") = to_array(rmse),
+        py::arg("n") = py::array_t<std::uint64_t>(static_cast<py::ssize_t>(sampler_counts.size()), sampler_counts.data()),
+        py::arg("skipped") = skipped, py::arg("mean_error") = to_array(mean_error), py::arg("rmse") = to_array(rmse),
         py::arg("variance") = to_array(variance), py::arg("seconds") = to_array(seconds),
         py::arg("efficiency") = to_array(efficiency), py::arg("fitted") = entry.fitted,
         py::arg("slope") = entry.slope.slope, py::arg("slope_standard_error") = entry.slope.slope_standard_error,
@@ -112,9 +122,11 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
 void bind_integrate_converge(py::module_& m) {
   m.def("integrands", &integrand_list, "Every test integrand as a dict");
   m.def("integrate", &integrate, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("sampler"),
-        py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"));
+        py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"),
+        py::arg("confidence"));
   m.def("converge", &converge, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("samplers"),
-        py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"));
+        py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"));
+  m.attr("default_counts") = sa::default_counts;
   m.def("parse_counts", [](const std::string& text) { return sa::parse_counts(text); });
 }
 }  // namespace

@@ -99,7 +99,7 @@ def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str |
 
     randomize=None uses the sampler's documented default (first in its
     `randomizers` list); "none" asks for the unrandomized construction.
-    start is the index of the first point (sequences only, like scipy's
+    start is the index of the first point (sequences and random, like scipy's
     fast_forward). n=None is allowed only with radius= for a maximal Poisson-disk set.
     Extra keyword arguments are the sampler's parameters (see samplers()).
     """

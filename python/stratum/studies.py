@@ -69,7 +69,8 @@ def integrands() -> list[dict]:
 
 
 def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | None = None, seed: int = 0,
-              randomize: str | None = None, runs: int = 1, threads: int = 1, **params) -> dict:
+              randomize: str | None = None, runs: int = 1, threads: int = 1, confidence: float = 0.95,
+              **params) -> dict:
     """Estimate `integrand` over [0,1]^d with `n` points of `sampler`, a
     spec NAME[(KEY=VALUE,...)][:RANDOMIZER] ("sobol:owen",
     "jittered(strata=4x8)"; docs/samplers.md).
@@ -78,19 +79,29 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     (standard_error_kind "iid": right for i.i.d. points, only indicative for
     stratified or QMC points). runs >= 2: independent randomizations, run r
     seeded with hash(seed, r); standard_error comes from the replicates
-    ("replicates"). Extra keyword arguments are the integrand's parameters
+    ("replicates"), or is nan with standard_error_kind "identical-runs" when
+    every run gave the same estimate (a sampler that is not randomized, e.g.
+    "grid", "zaremba", "hammersley:none": no error estimate, never a false 0). Extra keyword arguments are the integrand's parameters
     (numbers or arrays, e.g. a=[2, 3, 4]). Returns a dict with estimate,
     standard_error, standard_error_kind, exact, error, seconds, run_estimates
-    (numpy array) and the resolved integrand, sampler, randomize, d, n, runs.
+    (numpy array) and the resolved integrand, sampler, randomize, d, n, runs;
+    interval (low, high), the Student-t confidence interval at level
+    `confidence` (estimate +- t_{runs-1} x standard_error over the runs; with
+    runs=1, t_{n-1} over the n values), its half_width, and efficiency
+    1 / (variance x seconds) with seconds_per_run, as converge has (nan
+    without a standard error).
     """
+    if isinstance(confidence, bool) or not isinstance(confidence, numbers.Real) or not 0 < confidence < 1:
+        raise InvalidArgument(f"invalid confidence = {confidence!r}: must be a level strictly between 0 and 1, "
+                              "e.g. 0.95")
     n = _count("n", n, "must be a positive integer")
     runs = _small("runs", runs, "must be in [1, 1000000]", 1, 1000000)
     threads = _checks.threads(threads)
     return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize or "", n, runs,
-                              _seed(seed), threads)
+                              _seed(seed), threads, float(confidence))
 
 
-def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | None = None, seed: int = 0,
+def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = None, seed: int = 0,
              threads: int = 1, **params) -> dict:
     """Convergence study: for each sampler (a spec
     NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md; a list, or one string
@@ -98,9 +109,13 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     randomizations (run r of sampler s at N seeded with hash(seed, s, N, r)).
 
     n: "A:B" (powers of two from A to B), "A:B:F" (A, A*F, ... up to B) or a
-    list of increasing positive integers. Returns a dict: integrand, d, exact,
-    runs, n (numpy array) and samplers, a dict keyed by "name:randomizer" of
-    dicts with numpy arrays mean_error, rmse, variance, seconds, efficiency
+    list of increasing positive integers; None (the default) is "16:65536",
+    where each sampler skips the counts it refuses (2D jittered takes only
+    squares) and lists them in its "skipped" (n, reason); a count given
+    explicitly that a sampler refuses raises InvalidArgument. Returns a dict:
+    integrand, d, exact, runs, n (numpy array, the counts asked for) and
+    samplers, a dict keyed by "name:randomizer" of dicts with n (the counts
+    it ran), skipped, numpy arrays mean_error, rmse, variance, seconds, efficiency
     (1 / (variance x seconds)), and the fitted log-log slope of variance vs N
     (slope, slope_standard_error, intercept; fitted says "variance", or "mse"
     for a deterministic sampler). Numbers other than timings do not depend on
@@ -111,7 +126,10 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     samplers = list(samplers)
     if not samplers or not all(isinstance(s, str) for s in samplers):
         raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")
-    if isinstance(n, str):
+    skip_refused = n is None
+    if n is None:
+        counts = _stratum.parse_counts(_stratum.default_counts)
+    elif isinstance(n, str):
         counts = _stratum.parse_counts(n)
     else:
         values = [n] if isinstance(n, numbers.Integral) else list(np.asarray(n).ravel().tolist())
@@ -119,7 +137,7 @@ def converge(integrand: str, samplers, n="16:65536", runs: int = 32, d: int | No
     runs = _small("runs", runs, "must be in [2, 1000000] (a variance needs 2 runs)", 2, 1000000)
     threads = _checks.threads(threads)
     return _stratum.converge(integrand, _dimension(d), _integrand_params(params), samplers, counts, runs, _seed(seed),
-                             threads)
+                             threads, skip_refused)
 
 
 # ============================================================================

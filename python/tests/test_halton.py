@@ -134,12 +134,28 @@ def test_seeds_and_start_past_two_to_the_32():
 
 @pytest.mark.parametrize("randomize", RANDOMIZERS)
 def test_hammersley_first_dimension(randomize):
-    n = 243
-    x = stratum.points("hammersley", n, 3, seed=4, randomize=randomize)
-    assert np.all((x >= 0) & (x < 1))
-    if randomize == "cp":
-        assert np.array_equal(np.bincount(np.floor(x[:, 0] * n).astype(int), minlength=n), np.ones(n, dtype=int))
-    else:
-        assert np.array_equal(x[:, 0], np.arange(n) / n)
-        halton = stratum.points("halton", n, 2, seed=4, randomize=randomize)
-        assert np.array_equal(x[:, 1:], halton)
+    """i/N is kept only by none; cp keeps it Latin at any n, the base-2 digit
+    randomizers (permute = xor, owen) at n = 2^k; the other coordinates are Halton's."""
+    for n in (243, 256):
+        x = stratum.points("hammersley", n, 3, seed=4, randomize=randomize)
+        assert np.all((x >= 0) & (x < 1))
+        nudge = 1e-9 if randomize == "none" else 0  # i/N sits on the stratum edges
+        latin = np.array_equal(np.bincount(np.floor(x[:, 0] * n + nudge).astype(int), minlength=n), np.ones(n, dtype=int))
+        if randomize == "none":
+            assert np.array_equal(x[:, 0], np.arange(n) / n)
+        else:
+            assert not np.array_equal(x[:, 0], np.arange(n) / n)
+            assert not np.array_equal(x[:, 0], stratum.points("hammersley", n, 3, seed=5, randomize=randomize)[:, 0])
+        assert latin or (n == 243 and randomize in ("permute", "xor", "owen"))
+        if randomize != "cp":
+            halton = stratum.points("hammersley", n, 2, seed=4, randomize=randomize)
+            assert np.array_equal(x[:, :2], halton)
+            assert np.array_equal(x[:, 1:], stratum.points("halton", n, 2, seed=4, randomize=randomize))
+
+
+def test_hammersley_estimates_are_unbiased():
+    """x_0 < 0.3 among n = 4 points: 1/2 for i/N, 0.3 in expectation once x_0 is uniform (z-test, 3000 seeds)."""
+    for randomize in ("permute", "owen"):
+        f = np.array([np.mean(stratum.points("hammersley", 4, 2, seed=s, randomize=randomize)[:, 0] < 0.3)
+                      for s in range(3000)])
+        assert abs(f.mean() - 0.3) < 3.9 * f.std(ddof=1) / np.sqrt(len(f)), (randomize, f.mean())

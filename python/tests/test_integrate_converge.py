@@ -71,6 +71,52 @@ def test_integrate_error_within_standard_error():
     assert stratum.integrate("gaussian", "sobol:owen", 1024, runs=8, seed=2, threads=2)["estimate"] == q["estimate"]
 
 
+def test_converge_default_counts_work_for_every_integrand():
+    for info in stratum.integrands():
+        r = stratum.converge(info["name"], "random,jittered", runs=2)
+        rand, jit = r["samplers"]["random:none"], r["samplers"]["jittered:none"]
+        assert list(r["n"]) == [2**k for k in range(4, 17)]
+        assert list(rand["n"]) == list(r["n"]) and rand["skipped"] == []
+        assert list(jit["n"]) == [4**k for k in range(2, 9)], info["name"]
+        assert [s["n"] for s in jit["skipped"]] == [2**k for k in range(5, 16, 2)]
+        assert "invalid n = 32" in jit["skipped"][0]["reason"]
+        assert len(jit["variance"]) == 7 and np.isfinite(jit["slope"])
+    with pytest.raises(stratum.InvalidArgument, match="n = 32"):
+        stratum.converge("disk", "jittered", "16:65536", runs=2)  # given explicitly: every count must work
+
+
+def test_integrate_never_reports_a_false_zero_standard_error():
+    r = stratum.integrate("step", "hammersley:owen", 64, runs=16)
+    assert r["standard_error_kind"] == "replicates" and r["standard_error"] > 0
+    assert abs(r["error"]) < 4.07 * r["standard_error"]  # t_15 at 0.001
+    for spec in ("grid", "zaremba", "hammersley:none", "fibonacci"):
+        r = stratum.integrate("step", spec, 64, runs=16)
+        assert r["standard_error_kind"] == "identical-runs" and math.isnan(r["standard_error"]), spec
+
+
+def test_integrate_interval_covers_at_its_level():
+    """400 seeds of random on gaussian (n = 64, 8 runs): the 95% Student-t
+    intervals cover the exact value a number of times inside the
+    binomial(400, 0.95) band of probability 0.999."""
+    from scipy import stats
+    covered = 0
+    for seed in range(400):
+        r = stratum.integrate("gaussian", "random", 64, runs=8, seed=seed)
+        low, high = r["interval"]
+        assert high - r["estimate"] == pytest.approx(r["half_width"], abs=1e-15)
+        covered += low <= r["exact"] <= high
+    band = stats.binom(400, 0.95)
+    assert band.ppf(0.0005) <= covered <= band.isf(0.0005), covered
+    r = stratum.integrate("gaussian", "random", 64, runs=8, seed=1, confidence=0.9)
+    assert r["confidence"] == 0.9
+    # t_{7, 0.95} = 1.8945786050900074 (mpmath, 30 digits; scipy's t.ppf is off by 1e-11 here)
+    assert r["half_width"] == pytest.approx(1.8945786050900074 * r["standard_error"], rel=1e-12)
+    assert r["efficiency"] == pytest.approx(1 / (r["standard_error"] ** 2 * 8 * r["seconds_per_run"]), rel=1e-9)
+    for level in (0, 1, 1.5, True, "0.9"):
+        with pytest.raises(stratum.InvalidArgument, match="confidence"):
+            stratum.integrate("gaussian", "random", 64, runs=8, confidence=level)
+
+
 def test_converge_rates_and_thread_invariance():
     one = stratum.converge("gaussian", "random,jittered", "16:4096:4", runs=64, seed=3)
     two = stratum.converge("gaussian", ["random", "jittered"], [16, 64, 256, 1024, 4096], runs=64, seed=3, threads=2)

@@ -78,11 +78,17 @@ def test_multi_jittered_latin_and_stratified(name, n, params, shape):
 @pytest.mark.parametrize("method", ["random", "formula"])
 @pytest.mark.parametrize("n", [1, 4, 5, 6, 7, 8, 9, 10, 49, 64, 100, 1000, 4096])
 def test_n_queens_condition(n, method):
+    """The queens' cells are those of the fixed n x n grid unrotated (none); the
+    default, cp, rotates the whole pattern (so it is unbiased): the same cells
+    then sit on the grid shifted by the rotation, wrapped."""
     for seed in range(3):
-        x = stratum.points("n-queens", n, 2, seed=seed, method=method)
+        x = stratum.points("n-queens", n, 2, seed=seed, method=method, randomize="none")
         col, row = cells(x[:, 0], n), cells(x[:, 1], n)
         assert len(set(col)) == n and len(set(row)) == n
         assert len(set(col - row)) == n and len(set(col + row)) == n
+        rotated = stratum.points("n-queens", n, 2, seed=seed, method=method)
+        shift = (rotated - x) % 1.0  # one rotation for every point
+        assert np.allclose(shift, shift[0], atol=1e-12) or n == 1
 
 
 def test_n_queens_random_is_default_deterministic_and_seeded():

@@ -54,3 +54,12 @@ def test_every_sampler_in_unit_cube_and_thread_invariant():
 def test_bad_input_names_the_argument(kwargs, word):
     with pytest.raises(ValueError, match=word):
         stratum.points(**kwargs)
+
+
+def test_random_takes_start():
+    """random is index-addressable: point i of start=K is point K + i of a longer run (also past 2^32)."""
+    longer = stratum.points("random", 30, 3, seed=4, start=2**32 - 7)
+    assert np.array_equal(stratum.points("random", 20, 3, seed=4, start=2**32 + 3), longer[10:])
+    assert np.array_equal(stratum.points("random", 6, 3, seed=4, start=4), stratum.points("random", 10, 3, seed=4)[4:])
+    with pytest.raises(stratum.InvalidArgument, match="start = 1: jittered is a finite pattern"):
+        stratum.points("jittered", 16, 2, start=1)

@@ -6,6 +6,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <boost/math/distributions/students_t.hpp>
+
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <chrono>
@@ -166,6 +169,8 @@ IntegrationResult integrate(const IntegrationRequest& request) {
   require(request.n >= 1, "n", request.n, "must be a positive integer");
   require(request.runs >= 1 && request.runs <= max_runs, "runs", request.runs, "must be in [1, 1000000]");
   require(request.threads >= 1 && request.threads <= max_threads, "threads", request.threads, "must be in [1, 1024]");
+  require(request.confidence > 0 && request.confidence < 1, "confidence", request.confidence,
+          "must be a level strictly between 0 and 1, e.g. 0.95");
   IntegrationResult result;
   result.randomize = check_sampler(request.sampler, request.n, d);
   result.integrand = find_integrand(request.integrand.name).name;
@@ -180,30 +185,59 @@ IntegrationResult integrate(const IntegrationRequest& request) {
     const RunOutcome outcome = run_once(*integrand, request.sampler, request.n, request.seed, request.threads, true);
     result.run_estimates = {outcome.estimate};
     result.estimate = outcome.estimate;
-    result.standard_error = outcome.values.standard_error();
+    result.standard_error = request.n >= 2 ? outcome.values.standard_error() : std::numeric_limits<double>::quiet_NaN();
     result.standard_error_kind = "iid";
+    result.seconds_per_run = outcome.seconds;
   } else {
     // Independent randomizations, run r seeded with hash64(seed, r): the RQMC replicate estimate.
     // The runs are a job's items: a distributed job's processes each run their share.
     result.run_estimates.resize(request.runs);
+    std::vector<double> run_seconds(request.runs);
     const distributed::Share mine = distributed::share(request.runs);
     tbb::task_arena arena(static_cast<int>(request.threads));
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
                         [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t r = range.begin(); r != range.end(); ++r)
-                            result.run_estimates[r] = run_once(*integrand, request.sampler, request.n,
-                                                               hash64(request.seed, r), 1, false).estimate;
+                          for (std::size_t r = range.begin(); r != range.end(); ++r) {
+                            const RunOutcome outcome =
+                                run_once(*integrand, request.sampler, request.n, hash64(request.seed, r), 1, false);
+                            result.run_estimates[r] = outcome.estimate;
+                            run_seconds[r] = outcome.seconds;
+                          }
                         });
     });
     distributed::gather_shares(result.run_estimates, request.runs);
+    distributed::gather_shares(run_seconds, request.runs);
+    for (double s : run_seconds) result.seconds_per_run += s / request.runs;
     const auto replicates = estimators::rqmc_estimate(result.run_estimates);
     result.estimate = replicates.estimate;
     result.standard_error = replicates.standard_error;
     result.standard_error_kind = "replicates";
+    // Runs that do not differ (a deterministic sampler or randomizer) say
+    // nothing about the error: no standard error rather than a false 0.
+    if (std::all_of(result.run_estimates.begin(), result.run_estimates.end(),
+                    [&](double v) { return v == result.run_estimates.front(); })) {
+      result.standard_error = std::numeric_limits<double>::quiet_NaN();
+      result.standard_error_kind = "identical-runs";
+    }
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.error = result.estimate - result.exact;
+  // The Student-t interval: ν = runs − 1 over the replicates, n − 1 over one set's values.
+  result.confidence = request.confidence;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  result.half_width = result.interval_low = result.interval_high = result.efficiency = nan;
+  if (std::isfinite(result.standard_error)) {
+    const double dof = request.runs >= 2 ? request.runs - 1.0 : static_cast<double>(request.n) - 1.0;
+    const double t = boost::math::quantile(boost::math::students_t(dof), (1 + request.confidence) / 2);
+    result.half_width = t * result.standard_error;
+    result.interval_low = result.estimate - result.half_width;
+    result.interval_high = result.estimate + result.half_width;
+    // One run's variance: the replicates' (SE² · runs), or s²/n for one set.
+    const double variance = result.standard_error * result.standard_error * (request.runs >= 2 ? request.runs : 1);
+    result.seconds_per_run = std::max(result.seconds_per_run, 1e-9);  // a clock tick at least, as converge
+    result.efficiency = estimators::efficiency(variance, result.seconds_per_run);
+  }
   return result;
 }
 
@@ -224,10 +258,36 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   result.d = d;
   result.exact = integrand->exact();
   result.runs = request.runs;
-  for (const auto& choice : request.samplers) {
+  // The cells (sampler, N) to run: every count, or (skip_refused_counts)
+  // the counts each sampler takes.
+  struct Cell {
+    std::size_t sampler;
+    std::uint64_t n;
+  };
+  std::vector<Cell> cells;
+  for (std::size_t s = 0; s < request.samplers.size(); ++s) {
+    const SamplerChoice& choice = request.samplers[s];
     SamplerConvergence entry;
     entry.sampler = choice;
-    for (std::uint64_t n : request.counts) entry.sampler.randomize = check_sampler(choice, n, d);
+    std::size_t taken = 0;
+    for (std::uint64_t n : request.counts) {
+      try {
+        entry.sampler.randomize = check_sampler(choice, n, d);
+      } catch (const invalid_argument& error) {
+        if (!request.skip_refused_counts || error.argument() != "n") throw;
+        entry.skipped.push_back({n, error.what()});
+        continue;
+      }
+      cells.push_back({s, n});
+      ++taken;
+    }
+    if (taken == 0) {
+      std::string listed;
+      for (std::uint64_t n : request.counts) listed += (listed.empty() ? "" : ",") + std::to_string(n);
+      throw invalid_argument("n", listed,
+                             "sampler '" + choice.name + "' takes none of these counts (" +
+                                 entry.skipped.front().reason + "); give --n with counts it takes");
+    }
     result.samplers.push_back(std::move(entry));
   }
 
@@ -236,20 +296,17 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   // how TBB schedules the tasks.
   // The tasks are also a job's items: each process of a distributed job runs
   // its share, and every process then holds every slot.
-  const std::size_t per_sampler = request.counts.size() * request.runs;
-  const std::size_t tasks = request.samplers.size() * per_sampler;
+  const std::size_t tasks = cells.size() * request.runs;
   std::vector<double> slots(2 * tasks);  // (estimate, seconds) of each task
   const distributed::Share mine = distributed::share(tasks);
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t task = range.begin(); task != range.end(); ++task) {
-        const std::size_t s = task / per_sampler;
-        const std::size_t k = (task % per_sampler) / request.runs;
+        const Cell& cell = cells[task / request.runs];
         const std::size_t r = task % request.runs;
-        const std::uint64_t n = request.counts[k];
-        const RunOutcome outcome =
-            run_once(*integrand, result.samplers[s].sampler, n, hash64(request.seed, s, n, r), 1, false);
+        const RunOutcome outcome = run_once(*integrand, result.samplers[cell.sampler].sampler, cell.n,
+                                            hash64(request.seed, cell.sampler, cell.n, r), 1, false);
         slots[2 * task] = outcome.estimate;
         slots[2 * task + 1] = outcome.seconds;
       }
@@ -262,11 +319,12 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   for (std::size_t s = 0; s < result.samplers.size(); ++s) {
     auto& entry = result.samplers[s];
     std::vector<double> x, variances, mses;
-    for (std::size_t k = 0; k < request.counts.size(); ++k) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (cells[c].sampler != s) continue;
       estimators::RunningStats spread, time;
       double error_sum = 0, squared_error_sum = 0;
       for (std::size_t r = 0; r < request.runs; ++r) {
-        const std::size_t task = s * per_sampler + k * request.runs + r;
+        const std::size_t task = c * request.runs + r;
         const double error = estimate_of(task) - result.exact;
         spread.add(estimate_of(task));
         time.add(seconds_of(task));
@@ -274,7 +332,7 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
         squared_error_sum += error * error;
       }
       ConvergenceRow row;
-      row.n = request.counts[k];
+      row.n = cells[c].n;
       row.mean_error = error_sum / request.runs;
       row.rmse = std::sqrt(squared_error_sum / request.runs);
       row.variance = spread.variance();

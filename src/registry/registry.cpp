@@ -72,8 +72,12 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   if (request.radius)
     require(*request.radius > 0 && *request.radius <= 1, "radius", *request.radius, "must be in (0, 1]");
   if (request.start != 0)
-    require(sampler.kind == "sequence", "start", request.start,
-            sampler.name + " is a finite pattern; only sequences can start past index 0");
+    require(sampler.kind == "sequence" ||
+                std::find(sampler.properties.begin(), sampler.properties.end(), "progressive") !=
+                    sampler.properties.end(),
+            "start", request.start,
+            sampler.name + " is a finite pattern; only sequences and progressive samplers (random) can start past "
+                           "index 0");
   if (request.n)
     require(request.start <= ~std::uint64_t{0} - *request.n, "start", request.start, "start + n must fit in 64 bits");
   const std::string randomize = request.randomize.empty() ? sampler.randomizers.front() : request.randomize;

@@ -170,10 +170,11 @@ std::vector<SamplerInfo> patterns() {
   list.push_back({
       .name = "random",
       .kind = "pattern",
-      .description = "independent uniform points from a counter-based generator",
+      .description = "independent uniform points from a counter-based generator; point i depends only on (seed, i), "
+                     "so start=K continues a run",
       .min_dim = 1,
       .max_dim = 1u << 16,
-      .properties = {"index-addressable", "unstratified"},
+      .properties = {"index-addressable", "progressive", "unstratified"},
       .randomizers = {"none"},
       .counts = "any n >= 1",
       .params = {},
@@ -182,8 +183,9 @@ std::vector<SamplerInfo> patterns() {
       .generate =
           [](const SamplerRequest& request) {
             const RandomPattern random(request.seed);
+            const std::uint64_t start = request.start;
             return fill_index_addressable(*request.n, request.d, request.threads,
-                                          [&](std::uint64_t i, unsigned j) { return random.sample(i, j); });
+                                          [&](std::uint64_t i, unsigned j) { return random.sample(start + i, j); });
           },
   });
 
@@ -283,12 +285,15 @@ std::vector<SamplerInfo> patterns() {
       .description = "N-queens: one point per row and column of an n x n grid, no two cells on a diagonal; a random "
                      "solution by conflict-reducing swaps from a random permutation (Sosic, Gu 1990), or explicit "
                      "solutions with method=formula (a*i+b mod n when gcd(n,6)=1, else Hoffman-Loessi-Moore 1969); "
-                     "a random symmetry of the square, jittered in the cells",
+                     "a random symmetry of the square, jittered in the cells; by default Cranley-Patterson "
+                     "rotated (unbiased: the random solutions' cell occupancy is not exactly uniform), none keeps "
+                     "the cells on the fixed n x n grid",
       .min_dim = 2,
       .max_dim = 2,
-      .properties = {"Latin in x and y", "no two points in a diagonal of cells",
-                     "unbiased with cp (method=formula: also when gcd(n,6)=1)"},
-      .randomizers = {"none", "cp"},
+      .properties = {"Latin in x and y (on the rotated grid under cp)",
+                     "no two points in a diagonal of cells (none; cp: of the rotated, wrapped grid)",
+                     "unbiased with cp, the default (none: only method=formula with gcd(n,6)=1)"},
+      .randomizers = {"cp", "none"},
       .counts = "n = 1 or n >= 4 (no n-queens solution exists for n = 2, 3); method=random: n <= 2^24",
       .params = {{"method", "random (local search, well spread) or formula (explicit solutions on a few lines)",
                   "random"}},

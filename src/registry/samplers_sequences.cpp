@@ -7,11 +7,16 @@
 ///  - owen: nested uniform scrambling in each base (Owen 1995), slower;
 ///  - xor: base-b digital shift;
 ///  - cp: Cranley–Patterson rotation of the unscrambled points.
-/// Hammersley takes the same list and also defaults to permute: coordinate 0
-/// (i/N) is kept as is except under cp, so it stays exactly Latin; the
-/// others are Halton's coordinates 0..d−2 with the same seed and randomizer
-/// (cp aside), and the elementary intervals survive at N = b^k. Because i/N
-/// is not randomized, only cp makes Hammersley estimates unbiased.
+/// Hammersley takes the same list and also defaults to permute; the
+/// coordinates 1..d−1 are Halton's coordinates 0..d−2 with the same seed and
+/// randomizer (cp aside). Coordinate 0, i/N, is randomized by every
+/// randomizer but none, so each point is uniform and estimates are
+/// unbiased: cp rotates it (exactly Latin for any N); permute and xor apply
+/// a base-2 digital shift to its 64-bit binary fraction (a random digit
+/// permutation in base 2 is a flip), owen nested uniform scrambling in base
+/// 2. These map dyadic intervals onto dyadic intervals, so at N = 2^k i/N
+/// stays Latin and the (0, k, 2)-net of (i/N, φ_2(i)) survives; at other N
+/// coordinate 0 is uniform but no longer exactly one point per 1/N.
 /// Faure's (0, s)-sequence takes the same randomizers, defaulting to owen:
 /// each acts on the point's digits (the digit word), so nets stay nets.
 #include <algorithm>
@@ -21,6 +26,7 @@
 #endif
 
 #include "families.hpp"
+#include "stratum/randomizers/base2.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/randomizers/digital_shift_base_b.hpp"
@@ -101,34 +107,50 @@ static PointSet generate_halton(const SamplerRequest& request) {
   return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return halton.sample(start + i, j); });
 }
 
-/// Hammersley points: coordinate 0 is i/N (rotated only under cp), the
-/// others are Halton's coordinates 0..d−2 under the same randomizer.
+/// i/N as a 64-bit binary fraction, floor(i · 2^64 / N): exact at N = 2^k.
+static std::uint64_t fraction_bits(std::uint64_t i, std::uint64_t n) {
+  return static_cast<std::uint64_t>((static_cast<unsigned __int128>(i) << 64) / n);
+}
+
+/// Hammersley points: coordinate 0 is i/N randomized in base 2 (see the top
+/// of this file), the others are Halton's coordinates 0..d−2 under the same
+/// randomizer.
 static PointSet generate_hammersley(const SamplerRequest& request) {
   const std::uint64_t n = *request.n;
   const unsigned d = request.d;
   const std::string& randomize = request.randomize;
   const Hammersley hammersley(n, d);
-  const auto tabulated = [&](const auto& scrambler) {
-    return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
-      if (j > 0) return scrambler.fill(row, rows, j - 1, out, d);
-      for (std::size_t k = 0; k < rows; ++k) out[k * d] = hammersley.sample(row + k, 0);
-    });
-  };
-  if (d > 1 && randomize == "permute") return tabulated(RandomDigitPermutations(request.seed, prime_bases(d - 1), n - 1));
-  if (d > 1 && randomize == "xor") return tabulated(BaseBDigitalShift(request.seed, prime_bases(d - 1), n - 1));
-  if (d > 1 && randomize == "owen") {
-    const BaseBOwenScrambler owen(request.seed, prime_bases(d - 1));
-    return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) {
-      return j == 0 ? hammersley.sample(i, 0) : owen.sample(i, j - 1);
-    });
-  }
   if (randomize == "cp") {
     const CranleyPattersonRotation rotation(request.seed);
     return fill_each(n, d, request.threads,
                      [&](std::uint64_t i, unsigned j) { return rotation(hammersley.sample(i, j), j); });
   }
-  // none, and d = 1 under a digit randomizer (i/N alone).
-  return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return hammersley.sample(i, j); });
+  if (randomize == "none")
+    return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return hammersley.sample(i, j); });
+  // permute, xor, owen: i/N's binary digits scrambled with a key of its own
+  // (independent of the radical inverses' scramblers). In base 2 a random
+  // permutation of each digit is a random flip, so permute and xor are the
+  // same digital shift; owen is nested uniform scrambling.
+  const std::uint64_t key = hash64(request.seed, 0x68616d30ULL /* "ham0" */);
+  const DigitalShift shift(key);
+  const auto nested = OwenScrambler(key).dimension(0);
+  const bool owen = randomize == "owen";
+  const auto first = [&](std::uint64_t i) {
+    const std::uint64_t bits = fraction_bits(i, n);
+    return bits_to_double(owen ? nested(bits) : shift(bits, 0));
+  };
+  if (d == 1) return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned) { return first(i); });
+  const auto tabulated = [&](const auto& scrambler) {
+    return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
+      if (j > 0) return scrambler.fill(row, rows, j - 1, out, d);
+      for (std::size_t k = 0; k < rows; ++k) out[k * d] = first(row + k);
+    });
+  };
+  if (randomize == "permute") return tabulated(RandomDigitPermutations(request.seed, prime_bases(d - 1), n - 1));
+  if (randomize == "xor") return tabulated(BaseBDigitalShift(request.seed, prime_bases(d - 1), n - 1));
+  const BaseBOwenScrambler scrambler(request.seed, prime_bases(d - 1));
+  return fill_each(n, d, request.threads,
+                   [&](std::uint64_t i, unsigned j) { return j == 0 ? first(i) : scrambler.sample(i, j - 1); });
 }
 
 /// Faure points with the request's randomizer applied to the digit words of
@@ -182,11 +204,13 @@ std::vector<SamplerInfo> sequences() {
       .name = "hammersley",
       .kind = "pattern",
       .description = "Hammersley points (i/N, phi_2(i), phi_3(i), ...) (Hammersley 1964); by default the radical "
-                     "inverses are scrambled by random digit permutations and i/N is kept (only cp moves it)",
+                     "inverses are scrambled by random digit permutations and i/N by a base-2 digital shift (owen: "
+                     "nested scrambling; cp: rotation), so every randomizer but none is unbiased",
       .min_dim = 1,
       .max_dim = Hammersley::max_dimensions,
-      .properties = {"low-discrepancy", "Latin in dimension 0",
-                     "elementary intervals at N = b^k (none, permute, owen, xor)"},
+      .properties = {"low-discrepancy", "Latin in dimension 0 (none, cp; permute, xor, owen at N = 2^k)",
+                     "elementary intervals at N = b^k (none; permute, owen, xor: of (i/N, phi_2(i)) at N = 2^k)",
+                     "unbiased (but none)"},
       .randomizers = radical_inverse_randomizers(),
       .counts = "any n >= 1",
       .params = {},

@@ -131,7 +131,7 @@ Section block_designs_section(SectionContext& context) {
   const nlohmann::json panels = {
       scatter(make("jittered", shown, 2, seed), "jittered (4×4 strata)", side),
       scatter(make("n-rooks", shown, 2, seed), "N-rooks (16×16 rows, columns)", shown),
-      scatter(make("n-queens", shown, 2, seed), "N-queens", shown),
+      scatter(make("n-queens", shown, 2, seed, "none"), "N-queens", shown),
       scatter(make("multi-jittered", shown, 2, seed), "multi-jittered (4×4 strata)", side),
       scatter(make("cmj", shown, 2, seed), "correlated multi-jittered", side),
       square_panel};
@@ -153,7 +153,7 @@ Section block_designs_section(SectionContext& context) {
   patterns.emplace_back("random", make("random", n, 2, seed));
   patterns.emplace_back("jittered", make("jittered", n, 2, seed));
   patterns.emplace_back("n-rooks", make("n-rooks", n, 2, seed));
-  patterns.emplace_back("n-queens", make("n-queens", n, 2, seed));
+  patterns.emplace_back("n-queens", make("n-queens", n, 2, seed, "none"));
   patterns.emplace_back("multi-jittered", make("multi-jittered", n, 2, seed));
   patterns.emplace_back("cmj", make("cmj", n, 2, seed));
   patterns.emplace_back("latin-square (3D)", make("latin-square", n, 3, seed));

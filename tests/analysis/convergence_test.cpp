@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/math/distributions/binomial.hpp>
+#include <boost/math/distributions/students_t.hpp>
+
 #include "../registry/error_of.hpp"
 
 #include <cmath>
@@ -185,6 +188,99 @@ TEST(Convergence, IntegrateOneRunAndReplicates) {
   EXPECT_LT(std::abs(replicated.error), 5.4 * replicated.standard_error);
   request.threads = 2;
   EXPECT_EQ(integrate(request).estimate, replicated.estimate);
+}
+
+// The faces' default counts work for every integrand of the registry: each
+// sampler skips, and lists, the counts it refuses (2D jittered: non-squares),
+// runs the others, and the seeds of the cells it runs are those of a request
+// that lists only them.
+TEST(Convergence, DefaultCountsWorkForEveryIntegrand) {
+  const std::vector<std::uint64_t> defaults = parse_counts(default_counts);
+  for (const auto& info : integrands()) {
+    ConvergenceRequest request;
+    request.integrand.name = info.name;
+    request.samplers = {parse_sampler_choice("random"), parse_sampler_choice("jittered")};
+    request.counts = defaults;
+    request.runs = 2;
+    request.skip_refused_counts = true;
+    ConvergenceResult result;
+    ASSERT_NO_THROW(result = run_convergence(request)) << info.name;
+    ASSERT_EQ(result.samplers.size(), 2u);
+    EXPECT_EQ(result.samplers[0].rows.size(), defaults.size()) << info.name;
+    EXPECT_TRUE(result.samplers[0].skipped.empty()) << info.name;
+    const auto& jittered = result.samplers[1];
+    EXPECT_EQ(jittered.rows.size() + jittered.skipped.size(), defaults.size()) << info.name;
+    EXPECT_GE(jittered.rows.size(), 3u) << info.name;  // enough for a slope and its standard error
+    for (const auto& row : jittered.rows) {
+      const auto k = static_cast<std::uint64_t>(std::llround(std::sqrt(static_cast<double>(row.n))));
+      EXPECT_EQ(k * k, row.n) << info.name;  // d = 2 by default: squares only
+    }
+    for (const auto& skip : jittered.skipped) EXPECT_NE(skip.reason.find("invalid n = " + std::to_string(skip.n)), std::string::npos);
+    EXPECT_FALSE(std::isnan(jittered.slope.slope)) << info.name;
+  }
+  // Without skip_refused_counts a refused count still fails, and a sampler that
+  // takes none of the counts fails with skipping too.
+  ConvergenceRequest request;
+  request.integrand.name = "disk";
+  request.samplers = {parse_sampler_choice("jittered")};
+  request.counts = defaults;
+  request.runs = 2;
+  EXPECT_NE(error_of([&] { run_convergence(request); }).find("invalid n = 32"), std::string::npos);
+  request.skip_refused_counts = true;
+  request.counts = {32, 128};
+  EXPECT_NE(error_of([&] { run_convergence(request); }).find("takes none of these counts"), std::string::npos);
+  // The skipped cells change nothing in the others.
+  request.counts = {16, 32, 64};
+  const auto skipping = run_convergence(request);
+  request.counts = {16, 64};
+  request.skip_refused_counts = false;
+  const auto plain = run_convergence(request);
+  ASSERT_EQ(skipping.samplers[0].rows.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) EXPECT_EQ(skipping.samplers[0].rows[k].variance, plain.samplers[0].rows[k].variance);
+}
+
+// The RQMC interval estimate ± t_{R−1} · SE covers the exact value at its
+// level: 400 seeds of random on a smooth integrand (gaussian, n = 64, 8 runs);
+// the count of covering intervals lies in the binomial(400, 0.95) band of
+// probability 0.999. Its half-width scales with the Student-t quantile, and
+// the efficiency is 1 / (one run's variance × one run's seconds).
+TEST(Convergence, IntegrateIntervalCoversAtItsLevel) {
+  IntegrationRequest request;
+  request.integrand.name = "gaussian";
+  request.sampler = parse_sampler_choice("random");
+  request.n = 64;
+  request.runs = 8;
+  int covered = 0;
+  for (std::uint64_t seed = 0; seed < 400; ++seed) {
+    request.seed = seed;
+    const auto r = integrate(request);
+    ASSERT_NEAR(r.half_width, r.interval_high - r.estimate, 1e-15);
+    covered += r.interval_low <= r.exact && r.exact <= r.interval_high ? 1 : 0;
+  }
+  const boost::math::binomial band(400, 0.95);
+  EXPECT_GE(covered, boost::math::quantile(band, 0.0005));
+  EXPECT_LE(covered, boost::math::quantile(boost::math::complement(band, 0.0005)));
+  request.seed = 1;
+  const auto wide = integrate(request);
+  request.confidence = 0.5;
+  const auto narrow = integrate(request);
+  const boost::math::students_t t7(7);
+  EXPECT_NEAR(narrow.half_width / wide.half_width,
+              boost::math::quantile(t7, 0.75) / boost::math::quantile(t7, 0.975), 1e-12);
+  EXPECT_EQ(narrow.confidence, 0.5);
+  EXPECT_NEAR(wide.half_width, 2.3646242515927853 * wide.standard_error, 1e-12 * wide.standard_error);  // t_{7, 0.975}
+  EXPECT_NEAR(wide.efficiency, 1 / (wide.standard_error * wide.standard_error * 8 * wide.seconds_per_run),
+              1e-9 * wide.efficiency);
+  EXPECT_GT(wide.seconds_per_run, 0.0);
+  for (double level : {0.0, 1.0, -0.5, std::nan("")}) {
+    request.confidence = level;
+    EXPECT_NE(error_of([&] { integrate(request); }).find("invalid confidence"), std::string::npos) << level;
+  }
+  // No standard error, no interval: identical runs.
+  request.confidence = 0.95;
+  request.sampler = parse_sampler_choice("grid");
+  const auto fixed = integrate(request);
+  EXPECT_TRUE(std::isnan(fixed.interval_low) && std::isnan(fixed.half_width) && std::isnan(fixed.efficiency));
 }
 
 TEST(Convergence, BadInput) {

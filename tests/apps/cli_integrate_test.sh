@@ -23,6 +23,26 @@ r = json.load(open('$tmp/g.json'))
 exact = math.prod(math.sqrt(math.pi)/(2*a)*(math.erf(a*0.8)+math.erf(a*0.2)) for a in (2,3,4))
 assert abs(r['exact']-exact) < 1e-14 and r['d'] == 3 and r['standard_error_kind'] == 'iid', r
 assert abs(r['error']) < 4*r['standard_error'], r" && ok || fail "genz-gaussian exact and error"
+# Runs that do not differ give no standard error (never a false 0); Hammersley's i/N is randomized.
+"$stratum" integrate --integrand step -s hammersley:owen -n 64 --runs 16 --json >"$tmp/h.json" && ok || fail "integrate hammersley:owen"
+$py -c "import json; r=json.load(open('$tmp/h.json')); assert r['standard_error'] > 0 and abs(r['error']) < 4.07*r['standard_error'], r" \
+  && ok || fail "hammersley:owen standard error"
+"$stratum" integrate --integrand step -s grid -n 64 --runs 16 >"$tmp/out" && ok || fail "integrate grid"
+grep -q '^standard error  unavailable: the 16 runs gave identical estimates (grid:none' "$tmp/out" && ok || fail "grid: $(cat "$tmp/out")"
+"$stratum" integrate --integrand step -s zaremba -n 64 --runs 4 --json >"$tmp/z.json" && ok || fail "integrate zaremba"
+$py -c "import json; r=json.load(open('$tmp/z.json')); assert r['standard_error'] is None and r['standard_error_kind'] == 'identical-runs', r" \
+  && ok || fail "zaremba: standard_error null"
+# The RQMC interval and the efficiency: t_{7, 0.975} = 2.3646 standard errors by default, t_{7, 0.95} at --confidence 0.9.
+"$stratum" integrate --integrand gaussian -s random -n 64 --runs 8 --seed 2 --confidence 0.9 --json >"$tmp/t.json" && ok || fail "integrate --confidence"
+$py -c "
+import json; r = json.load(open('$tmp/t.json'))
+assert r['confidence'] == 0.9 and abs(r['half_width'] - 1.8945786050900074 * r['standard_error']) < 1e-12 * r['standard_error'], r
+assert abs(r['interval'][0] - (r['estimate'] - r['half_width'])) < 1e-15 and abs(r['interval'][1] - (r['estimate'] + r['half_width'])) < 1e-15
+assert abs(r['efficiency'] * r['standard_error']**2 * 8 * r['seconds_per_run'] - 1) < 1e-9, r" && ok || fail "interval and efficiency values"
+"$stratum" integrate --integrand gaussian -s random -n 64 --runs 8 >"$tmp/out" && ok || fail "integrate text"
+grep -q '^95% interval \[.*Student-t over 8 runs' "$tmp/out" && grep -q '^efficiency ' "$tmp/out" && ok || fail "text interval: $(cat "$tmp/out")"
+expect_error "invalid confidence = 1.5: must be a level strictly between 0 and 1" integrate --integrand disk -n 10 --confidence 1.5
+expect_error "invalid confidence = 0" integrate --integrand disk -n 10 --confidence 0
 "$stratum" integrate --integrand step --sampler random -n 1000 | grep -q '^exact *0.3183098861837906' && ok || fail "text output"
 
 # converge: JSON shape, thread invariance, the slope of random sampling near -1.
@@ -51,6 +71,19 @@ expect_error "invalid a = x" integrate --integrand genz-gaussian -n 10 --integra
 expect_error "invalid parameter = bogus" integrate --integrand genz-gaussian -n 10 --integrand-param bogus=1
 expect_error "invalid randomize = owen" integrate --integrand disk --sampler random --randomize owen -n 10
 expect_error "invalid runs = 0" integrate --integrand disk -n 10 --runs 0
+# The default --n works for every integrand and sampler pair of the registry's
+# integrands with random and jittered: jittered (2D) skips the non-squares and says so.
+for integrand in $("$stratum" integrate --list --json | $py -c 'import json,sys; print(" ".join(e["name"] for e in json.load(sys.stdin)["integrands"]))'); do
+  "$stratum" converge --integrand "$integrand" --samplers random,jittered --runs 2 --json >"$tmp/d.json" && ok || fail "converge default --n for $integrand"
+done
+$py -c "
+import json; j = json.load(open('$tmp/d.json'))['samplers']
+assert j[0]['skipped'] == [] and len(j[0]['rows']) == 13, j[0]
+assert [r['n'] for r in j[1]['rows']] == [16, 64, 256, 1024, 4096, 16384, 65536], j[1]['rows']
+assert [s['n'] for s in j[1]['skipped']] == [32, 128, 512, 2048, 8192, 32768] and 'invalid n = 32' in j[1]['skipped'][0]['reason']" \
+  && ok || fail "converge default --n skips listed"
+"$stratum" converge --integrand disk --samplers random,jittered --runs 2 >"$tmp/out" && ok || fail "converge disk default --n"
+grep -q '^skipped N = 32,128,512,2048,8192,32768 of the default --n' "$tmp/out" && ok || fail "converge table says what it skipped"
 expect_error "invalid n = 16:100" converge --integrand disk --samplers random --n 16:100
 expect_error "invalid n = 64:16" converge --integrand disk --samplers random --n 64:16
 expect_error "invalid n = 16,8" converge --integrand disk --samplers random --n 16,8

@@ -39,6 +39,10 @@ expect_error "invalid d = 33" points -s lattice-sequence -n 4 -d 33
 expect_error "invalid generator" points -s lattice-sequence -n 4 -d 2 -p generator=1,0
 
 expect_error "sampler" points --sampler nosuch -n 4
+# random is index-addressable: point i of --start K is point K + i of a longer run.
+"$stratum" points -s random --seed 3 -n 12 -d 2 >"$tmp/out" && tail -n 5 "$tmp/out" >"$tmp/err" \
+  && "$stratum" points -s random --seed 3 -n 5 -d 2 --start 7 | cmp -s - "$tmp/err" && ok || fail "random --start 7"
+expect_error "invalid start = 1: jittered is a finite pattern" points -s jittered -n 16 --start 1
 expect_error "halton" points --sampler nosuch -n 4
 expect_error "invalid n = 0" points --sampler halton -n 0
 expect_error "invalid n = -3" points --sampler halton -n -3

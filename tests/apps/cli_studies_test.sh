@@ -8,6 +8,18 @@ set -u
 source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1"
 py=/usr/bin/python3
 
+# --- the program and `study` themselves --------------------------------------
+# --version prints CMake's project version and exits 0.
+version=$(sed -n 's/^project(stratum VERSION \([0-9.]*\).*/\1/p' "$(dirname "${BASH_SOURCE[0]}")/../../CMakeLists.txt")
+[ -n "$version" ] && [ "$("$stratum" --version)" = "stratum $version" ] && ok || fail "--version prints stratum $version"
+# study --help lists the studies, and the top-level help names them instead of pointing to study --help.
+"$stratum" study --help >"$tmp/help" && ok || fail "study --help"
+for name in mitchell dimension importance; do grep -q "^  $name " "$tmp/help" && ok || fail "study --help lists $name"; done
+"$stratum" --help | grep '^  study ' >"$tmp/help"
+grep -q 'mitchell, dimension or importance' "$tmp/help" && ! grep -q 'study --help' "$tmp/help" && ok \
+  || fail "--help describes study: $(cat "$tmp/help")"
+rm -f "$tmp/help"
+
 # --- dimension ---------------------------------------------------------------
 "$stratum" study dimension --dims 1:3 --n 16:1024 --runs 4 >"$tmp/table" && ok || fail "dimension table"
 grep -q '^d = 3: exact 1' "$tmp/table" && ok || fail "table lacks d = 3: $(head -5 "$tmp/table")"

@@ -49,6 +49,7 @@ struct IntegrationRequest {
   unsigned runs = 1;    ///< independent randomizations (seeds hash64(seed, 0, n, r))
   std::uint64_t seed = 0;
   unsigned threads = 1;
+  double confidence = 0.95;  ///< level of the confidence interval, in (0, 1)
 };
 
 struct IntegrationResult {
@@ -60,13 +61,31 @@ struct IntegrationResult {
   unsigned runs = 0;
   double estimate = 0;        ///< mean over runs of each run's mean of f
   double standard_error = 0;  ///< runs ≥ 2: from the replicates (RQMC); runs = 1: s/√n of the n values
-  /// "replicates" (valid for any unbiased randomized sampler) or "iid" (s/√n:
-  /// right for `random`, only indicative for stratified and QMC points).
+  /// "replicates" (valid for any unbiased randomized sampler), "iid" (s/√n:
+  /// right for `random`, only indicative for stratified and QMC points), or
+  /// "identical-runs": every run gave the same estimate (a deterministic
+  /// sampler such as grid:none, zaremba:none, hammersley:none), so there is
+  /// no error estimate and standard_error is NaN (never a false 0).
   std::string standard_error_kind;
   double exact = 0;
   double error = 0;  ///< estimate − exact
   double seconds = 0;  ///< wall time for all runs (generation + evaluation)
   std::vector<double> run_estimates;
+  /// The confidence interval estimate ± t · standard_error at level
+  /// `confidence`, t the Student-t quantile t_{ν, (1 + confidence)/2}: over
+  /// the runs (ν = runs − 1; the RQMC interval, valid for any unbiased
+  /// randomized sampler since the runs are independent, exact when their
+  /// estimates are normal and asymptotically in runs otherwise), or with
+  /// runs = 1 from the n values (ν = n − 1; right for `random` only). NaN
+  /// bounds when there is no standard error (identical runs, n = 1).
+  double confidence = 0.95;
+  double interval_low = 0, interval_high = 0;
+  double half_width = 0;  ///< t · standard_error
+  /// 1 / (variance × seconds) as in converge: the variance of one run's
+  /// estimate (runs ≥ 2: of the run estimates; runs = 1: s²/n) and the mean
+  /// wall time of one run; NaN without a standard error, +inf when it is 0.
+  double efficiency = 0;
+  double seconds_per_run = 0;
 };
 
 /// Validates everything first (names, d, n ≥ 1, runs ≥ 1, threads ≥ 1, the
@@ -82,6 +101,22 @@ struct ConvergenceRequest {
   unsigned runs = 32;                 ///< R ≥ 2 randomizations per (sampler, N)
   std::uint64_t seed = 0;
   unsigned threads = 1;
+  /// false: a count a sampler refuses fails the request. true (the faces set
+  /// it for their default counts, which must work for every sampler): each
+  /// sampler skips the counts it refuses (jittered in 2D takes only squares)
+  /// and lists them in SamplerConvergence::skipped; a sampler that takes none
+  /// of the counts still fails.
+  bool skip_refused_counts = false;
+};
+
+/// The counts of the faces' default N list (`converge --n`): every power of
+/// two from 16 to 65536.
+inline constexpr const char* default_counts = "16:65536";
+
+/// A count a sampler refused (skip_refused_counts), with the sampler's reason.
+struct SkippedCount {
+  std::uint64_t n = 0;
+  std::string reason;
 };
 
 /// One (sampler, N) cell of the study.
@@ -116,6 +151,7 @@ struct SamplerConvergence {
   /// "none" with a NaN slope when fewer than 2 values are positive).
   SlopeFit slope;
   std::string fitted;
+  std::vector<SkippedCount> skipped;  ///< counts left out (skip_refused_counts); rows hold the others
 };
 
 struct ConvergenceResult {
