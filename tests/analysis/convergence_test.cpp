@@ -164,11 +164,19 @@ TEST(Convergence, DeterministicSamplerFitsTheSquaredError) {
   EXPECT_LT(result.samplers[0].slope.slope, -1.0);  // QMC beats N^-1 on a smooth integrand
 }
 
-TEST(Convergence, IntegrateOneRunAndReplicates) {
+/// An integrate() request of `sampler` on `integrand` with n points and `runs` runs.
+IntegrationRequest integration_request(const std::string& integrand, const std::string& sampler, std::uint64_t n,
+                                       unsigned runs = 1) {
   IntegrationRequest request;
-  request.integrand.name = "bilinear";
-  request.sampler = parse_sampler_choice("random");
-  request.n = 10000;
+  request.integrand.name = integrand;
+  request.sampler = parse_sampler_choice(sampler);
+  request.n = n;
+  request.runs = runs;
+  return request;
+}
+
+TEST(Convergence, IntegrateOneRunAndReplicates) {
+  IntegrationRequest request = integration_request("bilinear", "random", 10000);
   request.seed = 3;
   const auto single = integrate(request);
   EXPECT_EQ(single.standard_error_kind, "iid");
@@ -245,11 +253,7 @@ TEST(Convergence, DefaultCountsWorkForEveryIntegrand) {
 // probability 0.999. Its half-width scales with the Student-t quantile, and
 // the efficiency is 1 / (one run's variance × one run's seconds).
 TEST(Convergence, IntegrateIntervalCoversAtItsLevel) {
-  IntegrationRequest request;
-  request.integrand.name = "gaussian";
-  request.sampler = parse_sampler_choice("random");
-  request.n = 64;
-  request.runs = 8;
+  IntegrationRequest request = integration_request("gaussian", "random", 64, 8);
   int covered = 0;
   for (std::uint64_t seed = 0; seed < 400; ++seed) {
     request.seed = seed;
