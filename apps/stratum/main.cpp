@@ -8,13 +8,13 @@
 #include <system_error>
 
 #include "commands.hpp"
-#include "distributed_session.hpp"
+#include "distributed_job.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
 
 int main(int argc, char** argv) {
-  stratum::cli::DistributedSession session(argc, argv);  // an MPI rank under mpirun/srun
+  stratum::cli::DistributedJob job(argc, argv);  // an MPI rank under mpirun/srun
   CLI::App app{"stratum: Monte Carlo and quasi-Monte Carlo sampling toolkit"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("stratum ") + STRATUM_VERSION_TEXT, "print the version and exit");
@@ -62,5 +62,5 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     code = 1, message = e.what();
   }
-  return session.finish(code, message);
+  return job.finish(code, message);
 }

@@ -25,7 +25,7 @@ struct Share {
 };
 
 /// The processes of a job: the MPI implementation lives with the CLI
-/// (apps/stratum/mpi_session.cpp), so the libraries need no MPI.
+/// (apps/stratum/distributed_job.cpp), so the libraries need no MPI.
 class Group {
  public:
   virtual ~Group() = default;

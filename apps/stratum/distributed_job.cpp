@@ -1,5 +1,5 @@
-/// DistributedSession: MPI when built with it and launched by mpirun/srun.
-#include "distributed_session.hpp"
+/// DistributedJob: MPI when built with it and launched by mpirun/srun.
+#include "distributed_job.hpp"
 
 #include <fcntl.h>
 #include <fmt/core.h>
@@ -107,14 +107,14 @@ class MpiGroup final : public distributed::Group {
 
 }  // namespace
 
-struct DistributedSession::Impl {
+struct DistributedJob::Impl {
   int saved_stderr = STDERR_FILENO;
 #ifdef STRATUM_MPI
   std::unique_ptr<MpiGroup> group;
 #endif
 };
 
-DistributedSession::DistributedSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv)
+DistributedJob::DistributedJob([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv)
     : impl_(std::make_unique<Impl>()) {
 #ifdef STRATUM_MPI
   if (!launched_by_mpi()) return;
@@ -134,7 +134,7 @@ DistributedSession::DistributedSession([[maybe_unused]] int& argc, [[maybe_unuse
 #endif
 }
 
-DistributedSession::~DistributedSession() {
+DistributedJob::~DistributedJob() {
 #ifdef STRATUM_MPI
   if (impl_->group) {
     distributed::set_group(nullptr);
@@ -144,7 +144,7 @@ DistributedSession::~DistributedSession() {
 #endif
 }
 
-int DistributedSession::finish(int code, const std::string& message) {
+int DistributedJob::finish(int code, const std::string& message) {
 #ifdef STRATUM_MPI
   if (impl_->group) {
     const int rank = impl_->group->rank();

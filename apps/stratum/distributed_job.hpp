@@ -10,13 +10,13 @@
 
 namespace stratum::cli {
 
-class DistributedSession {
+class DistributedJob {
  public:
   /// Joins the MPI job when this process was launched as one of its ranks.
-  DistributedSession(int& argc, char**& argv);
-  ~DistributedSession();
-  DistributedSession(const DistributedSession&) = delete;
-  DistributedSession& operator=(const DistributedSession&) = delete;
+  DistributedJob(int& argc, char**& argv);
+  ~DistributedJob();
+  DistributedJob(const DistributedJob&) = delete;
+  DistributedJob& operator=(const DistributedJob&) = delete;
 
   /// Ends the command: every rank learns whether any failed; `message` (an
   /// error, empty on success) is printed by the lowest failed rank only.
