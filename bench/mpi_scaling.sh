@@ -27,13 +27,13 @@ row() {  # row NAME args...
 }
 echo "| job | 1 process (s) | $k ranks (s) | speedup |"
 echo "|---|---|---|---|"
-row "discrepancy -m cd, N = 60000, d = 6" discrepancy -m cd -s random -n 60000 -d 6 --threads 1 --json
-row "discrepancy -m wd, N = 60000, d = 6" discrepancy -m wd -s random -n 60000 -d 6 --threads 1 --json
+row "discrepancy -m cd, N = 120000, d = 6" discrepancy -m cd -s random -n 120000 -d 6 --threads 1 --json
+row "discrepancy -m wd, N = 120000, d = 6" discrepancy -m wd -s random -n 120000 -d 6 --threads 1 --json
 # a fresh cache folder per run, so that each renders the reference
-one=$(seconds "$tmp/one" "$stratum" render --reference --reference-spp 64 --width 256 --height 256 --threads 1 --quiet \
+one=$(seconds "$tmp/one" "$stratum" render --reference --reference-spp 128 --width 256 --height 256 --threads 1 --quiet \
   --cache "$tmp/cache1" -o "$tmp/ref1.png")
-many=$(seconds "$tmp/many" "${mpi[@]}" "$stratum" render --reference --reference-spp 64 --width 256 --height 256 \
+many=$(seconds "$tmp/many" "${mpi[@]}" "$stratum" render --reference --reference-spp 128 --width 256 --height 256 \
   --threads 1 --quiet --cache "$tmp/cache2" -o "$tmp/ref2.png")
-printf "| %s | %.2f | %.2f | %.2fx |\n" "render --reference, Cornell box 256x256, 64 spp" "$one" "$many" "$(awk -v a="$one" -v b="$many" 'BEGIN { print a / b }')"
-row "converge, 2 samplers x 5 N x 64 runs" converge --integrand genz-gaussian -d 4 --samplers random,sobol:owen \
-  --n 64:16384:4 --runs 64 --threads 1 --json
+printf "| %s | %.2f | %.2f | %.2fx |\n" "render --reference, Cornell box 256x256, 128 spp" "$one" "$many" "$(awk -v a="$one" -v b="$many" 'BEGIN { print a / b }')"
+row "converge, 2 samplers x 6 N x 64 runs" converge --integrand genz-gaussian -d 4 --samplers random,sobol:owen \
+  --n 64:65536:4 --runs 64 --threads 1 --json

@@ -76,4 +76,45 @@ TEST(Distributed, GatherAsksForEachRanksSegmentOfVariableWidthItems) {
                std::logic_error);
 }
 
+/// A group that plays the other processes: it fills their segments with 1000 + position.
+class FillingGroup final : public stratum::distributed::Group {
+ public:
+  FillingGroup(int rank, int size) : rank_(rank), size_(size) {}
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  void gather(double* data, const std::vector<stratum::distributed::Share>& segments) override {
+    for (int r = 0; r < size_; ++r)
+      if (r != rank_)
+        for (std::size_t at = segments[std::size_t(r)].begin; at < segments[std::size_t(r)].end; ++at) data[at] = 1000.0 + double(at);
+  }
+  bool any(bool flag) override { return flag; }
+
+ private:
+  int rank_, size_;
+};
+
+TEST(Distributed, DealtItemsAreRoundRobinAndGatheredIntoPlace) {
+  FillingGroup group(1, 3);
+  Installed installed(&group);
+  const auto mine = stratum::distributed::dealt(7);
+  ASSERT_EQ(mine.size(), 2u);  // items 1 and 4 of 0..6
+  EXPECT_EQ(mine[0], 1u);
+  EXPECT_EQ(mine[1], 4u);
+  std::vector<double> data(14, -1.0);  // 7 items of width 2
+  for (std::size_t j = 0; j < mine.size(); ++j) data[2 * mine[j]] = 10.0 * double(mine[j]), data[2 * mine[j] + 1] = 0.5;
+  stratum::distributed::gather_dealt(data, 7);
+  // Packed by process: rank 0's items 0, 3, 6 at positions 0–5, rank 1's 1, 4 at 6–9, rank 2's 2, 5 at 10–13.
+  const std::size_t position[7] = {0, 6, 10, 2, 8, 12, 4};
+  for (std::size_t i = 0; i < 7; ++i) {
+    if (i == 1 || i == 4) {
+      EXPECT_EQ(data[2 * i], 10.0 * double(i));
+      EXPECT_EQ(data[2 * i + 1], 0.5);
+    } else {
+      EXPECT_EQ(data[2 * i], 1000.0 + double(position[i])) << "item " << i;
+      EXPECT_EQ(data[2 * i + 1], 1001.0 + double(position[i])) << "item " << i;
+    }
+  }
+  EXPECT_EQ(stratum::distributed::dealt(1).size(), 0u);  // fewer items than processes: rank 1 has none
+}
+
 }  // namespace

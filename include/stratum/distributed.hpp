@@ -2,14 +2,16 @@
 /// Work split over the processes of one job (MPI ranks, or this process
 /// alone). Every result of stratum is a pure function of (seed, index,
 /// dimension), so a job's independent items (runs, row blocks, tile rows)
-/// can be computed anywhere: each process computes its contiguous share and
-/// the shares are gathered in rank order, after which every process holds
+/// can be computed anywhere: each process computes its share (a contiguous
+/// block, or items dealt round-robin where the cost varies along the list)
+/// and the shares are gathered, after which every process holds
 /// the same array the one-process run fills, and reduces it in the same
 /// fixed order. The result is therefore identical, bit for bit, to one
 /// process for any number of processes (docs/distributed.md).
 ///
 /// Without a group installed (the library, Python, a plain `stratum` run)
 /// this process is rank 0 of 1 and every function here is trivial.
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -100,6 +102,41 @@ inline void gather_shares(std::span<double> data, std::size_t count) {
   if (data.size() % count != 0) throw std::logic_error("gather_shares: items of unequal width");
   const std::size_t width = data.size() / count;
   gather_shares(data, count, [width](std::size_t i) { return i * width; });
+}
+
+/// Items dealt round-robin: this process takes items rank, rank + size,
+/// rank + 2·size, … of `count`. For lists whose cost varies along the list
+/// (runs at growing N, samplers of different cost), where contiguous shares
+/// would leave one process most of the work.
+struct Dealt {
+  std::size_t first = 0, stride = 1, count = 0;
+  /// How many items this process takes, and the j-th of them.
+  std::size_t size() const { return count > first ? (count - first + stride - 1) / stride : 0; }
+  std::size_t operator[](std::size_t j) const { return first + j * stride; }
+};
+inline Dealt dealt(std::size_t count) { return {std::size_t(rank()), std::size_t(size()), count}; }
+
+/// After this process filled its dealt items of `data` (`count` items of
+/// equal width, in their places), fills in the other processes' items.
+inline void gather_dealt(std::span<double> data, std::size_t count) {
+  Group* group = detail::installed_group.load();
+  if (!group || group->size() == 1 || count == 0) return;
+  if (data.size() % count != 0) throw std::logic_error("gather_dealt: items of unequal width");
+  const std::size_t width = data.size() / count, processes = std::size_t(group->size());
+  // Packed by process (process r's items r, r + K, … side by side), gathered, unpacked.
+  std::vector<Share> segments(processes);
+  std::vector<double> packed(data.size());
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < processes; ++r) {
+    segments[r].begin = at;
+    for (std::size_t i = r; i < count; i += processes, at += width)
+      if (r == std::size_t(group->rank())) std::copy_n(data.data() + i * width, width, packed.data() + at);
+    segments[r].end = at;
+  }
+  group->gather(packed.data(), segments);
+  for (std::size_t r = 0, from = 0; r < processes; ++r)
+    for (std::size_t i = r; i < count; i += processes, from += width)
+      std::copy_n(packed.data() + from, width, data.data() + i * width);
 }
 
 /// Whether `flag` is true on any process: a decision every process must

@@ -193,12 +193,13 @@ IntegrationResult integrate(const IntegrationRequest& request) {
     // The runs are a job's items: a distributed job's processes each run their share.
     result.run_estimates.resize(request.runs);
     std::vector<double> run_seconds(request.runs);
-    const distributed::Share mine = distributed::share(request.runs);
+    const distributed::Dealt mine = distributed::dealt(request.runs);
     tbb::task_arena arena(static_cast<int>(request.threads));
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 1),
                         [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t r = range.begin(); r != range.end(); ++r) {
+                          for (std::size_t j = range.begin(); j != range.end(); ++j) {
+                            const std::size_t r = mine[j];
                             const RunOutcome outcome =
                                 run_once(*integrand, request.sampler, request.n, hash64(request.seed, r), 1, false);
                             result.run_estimates[r] = outcome.estimate;
@@ -206,8 +207,8 @@ IntegrationResult integrate(const IntegrationRequest& request) {
                           }
                         });
     });
-    distributed::gather_shares(result.run_estimates, request.runs);
-    distributed::gather_shares(run_seconds, request.runs);
+    distributed::gather_dealt(result.run_estimates, request.runs);
+    distributed::gather_dealt(run_seconds, request.runs);
     for (double s : run_seconds) result.seconds_per_run += s / request.runs;
     const auto replicates = estimators::rqmc_estimate(result.run_estimates);
     result.estimate = replicates.estimate;
@@ -298,11 +299,14 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   // its share, and every process then holds every slot.
   const std::size_t tasks = cells.size() * request.runs;
   std::vector<double> slots(2 * tasks);  // (estimate, seconds) of each task
-  const distributed::Share mine = distributed::share(tasks);
+  // Dealt round-robin: each process takes every K-th run of every cell, so
+  // the costly cells (large N) are shared, not left to one process.
+  const distributed::Dealt mine = distributed::dealt(tasks);
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1), [&](const tbb::blocked_range<std::size_t>& range) {
-      for (std::size_t task = range.begin(); task != range.end(); ++task) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t j = range.begin(); j != range.end(); ++j) {
+        const std::size_t task = mine[j];
         const Cell& cell = cells[task / request.runs];
         const std::size_t r = task % request.runs;
         const RunOutcome outcome = run_once(*integrand, result.samplers[cell.sampler].sampler, cell.n,
@@ -312,7 +316,7 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
       }
     });
   });
-  distributed::gather_shares(slots, tasks);
+  distributed::gather_dealt(slots, tasks);
   const auto estimate_of = [&](std::size_t task) { return slots[2 * task]; };
   const auto seconds_of = [&](std::size_t task) { return slots[2 * task + 1]; };
 

@@ -296,9 +296,10 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
   // the result does not depend on scheduling, nor on how a distributed job
   // shares the tasks out.
   std::vector<double> squared_error(tasks.size());
-  const distributed::Share mine = distributed::share(tasks.size());
+  const distributed::Dealt mine = distributed::dealt(tasks.size());  // round-robin: every series shared
   in_arena(request.threads, [&] {
-    tbb::parallel_for(mine.begin, mine.end, [&](std::size_t t) {
+    tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      const std::size_t t = mine[j];
       const Task& task = tasks[t];
       const DimensionSeries& series = study.series[task.series];
       const std::uint64_t n = series.n[task.point];
@@ -308,7 +309,7 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
       squared_error[t] = (estimate - series.exact) * (estimate - series.exact);
     });
   });
-  distributed::gather_shares(squared_error, tasks.size());
+  distributed::gather_dealt(squared_error, tasks.size());
   for (std::size_t s = 0; s < study.series.size(); ++s) {
     DimensionSeries& series = study.series[s];
     for (std::size_t i = 0; i < series.m.size(); ++i) {

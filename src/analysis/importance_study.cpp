@@ -305,10 +305,11 @@ ImportanceStudy run_importance_study(const ImportanceStudyRequest& request) {
   // Tasks (setup, method, run); each result lands in its own slot.
   const std::size_t per_setup = 2 * static_cast<std::size_t>(request.runs);
   std::vector<ReplicateResult> results(setups.size() * per_setup);
-  const distributed::Share mine = distributed::share(results.size());  // a distributed job's share
+  const distributed::Dealt mine = distributed::dealt(results.size());  // a distributed job's share, round-robin
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
-    tbb::parallel_for(mine.begin, mine.end, [&](std::size_t t) {
+    tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      const std::size_t t = mine[j];
       const std::size_t s = t / per_setup, which = (t % per_setup) / request.runs, run = t % request.runs;
       const Setup& setup = setups[s];
       const std::string& method = which == 0 ? setup.comparison.a.method : setup.comparison.b.method;
@@ -318,9 +319,11 @@ ImportanceStudy run_importance_study(const ImportanceStudyRequest& request) {
   });
   if (distributed::size() > 1) {
     std::vector<double> packed(3 * results.size());
-    for (std::size_t t = mine.begin; t < mine.end; ++t)
+    for (std::size_t j = 0; j < mine.size(); ++j) {
+      const std::size_t t = mine[j];
       packed[3 * t] = results[t].mean, packed[3 * t + 1] = results[t].variance, packed[3 * t + 2] = results[t].seconds;
-    distributed::gather_shares(packed, results.size());
+    }
+    distributed::gather_dealt(packed, results.size());
     for (std::size_t t = 0; t < results.size(); ++t) results[t] = {packed[3 * t], packed[3 * t + 1], packed[3 * t + 2]};
   }
   ImportanceStudy study{request.runs, request.samples, {}, {}};

@@ -145,9 +145,10 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
     return generate_points(patterns[c / counts].sampler,
                            request_for(patterns[c / counts], study.cells[c].n, hash64(options.seed, r)));
   };
-  const distributed::Share mine = distributed::share(tasks);
-  edge_detail::parallel_ranges(mine.end - mine.begin, options.threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t task = mine.begin + begin; task < mine.begin + end; ++task) {
+  const distributed::Dealt mine = distributed::dealt(tasks);  // round-robin: every cell shared
+  edge_detail::parallel_ranges(mine.size(), options.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) {
+      const std::size_t task = mine[j];
       const std::size_t c = task / k, r = task % k;
       const PointSet points = realize(c, r);
       const PointView view{points.data.get(), points.n, points.d};
@@ -157,7 +158,7 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
         spectrum_points[(c / counts) * k + r].assign(points.data.get(), points.data.get() + 2 * points.n);
     }
   });
-  distributed::gather_shares(results, tasks);
+  distributed::gather_dealt(results, tasks);
   if (distributed::size() > 1)  // the other processes' spectrum sets: generated again here (cheap beside the lines)
     for (std::size_t c = spectrum_column; c < study.cells.size(); c += counts)
       if (study.cells[c].requested == spectrum_count)

@@ -214,16 +214,20 @@ StarDiscrepancyBounds star_discrepancy_bounds(const PointView& points, double de
   // The subtrees are a job's items: a distributed job's processes each
   // finish their share; (lower, upper, boxes) per subtree are gathered.
   std::vector<Bounds> parts(frontier.size());
-  const distributed::Share mine = distributed::share(frontier.size());
+  const distributed::Dealt mine = distributed::dealt(frontier.size());  // round-robin: neighbouring subtrees differ most
   oneapi::tbb::task_arena arena(static_cast<int>(std::max(1u, threads)));
   arena.execute([&] {
-    oneapi::tbb::parallel_for(mine.begin, mine.end, [&](std::size_t i) { parts[i] = partition.run(std::move(frontier[i])); });
+    oneapi::tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      parts[mine[j]] = partition.run(std::move(frontier[mine[j]]));
+    });
   });
   if (distributed::size() > 1) {
     std::vector<double> packed(3 * parts.size());
-    for (std::size_t i = mine.begin; i < mine.end; ++i)
+    for (std::size_t j = 0; j < mine.size(); ++j) {
+      const std::size_t i = mine[j];
       packed[3 * i] = parts[i].lower, packed[3 * i + 1] = parts[i].upper, packed[3 * i + 2] = double(parts[i].boxes);
-    distributed::gather_shares(packed, parts.size());
+    }
+    distributed::gather_dealt(packed, parts.size());
     for (std::size_t i = 0; i < parts.size(); ++i)
       parts[i] = {packed[3 * i], packed[3 * i + 1], static_cast<std::uint64_t>(packed[3 * i + 2])};
   }

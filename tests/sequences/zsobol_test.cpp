@@ -91,6 +91,22 @@ TEST(ZSobol, TheIndexMapIsABijection) {
   }
 }
 
+TEST(ZSobol, BlockDigitsComposeToThePixelDigits) {
+  for (std::uint32_t resolution : {1u, 5u, 16u, 100u, 4096u})
+    for (std::uint64_t spp : {1u, 2u, 32u}) {
+      const ZSobol z(resolution, spp, 5);
+      for (unsigned k : {0u, 1u, 4u, 9u})
+        for (std::uint32_t p = 0; p < 3; ++p) {
+          const auto pair = z.pair(p);
+          for (auto [x, y] : {std::pair{0u, 0u}, std::pair{resolution - 1, resolution / 2}, std::pair{resolution / 3, 0u}}) {
+            const std::uint64_t block = z.block_digits(x, y, pair, k);
+            EXPECT_EQ(z.pixel_digits(x, y, pair, block, k), z.pixel_digits(x, y, pair))
+                << "resolution " << resolution << " spp " << spp << " k " << k;
+          }
+        }
+    }
+}
+
 TEST(ZSobol, UnbiasedOverSeeds) {
   // 3 pixels × 2 spp values = 6 t-tests at family level 0.01.
   const double alpha = stratum::testing::sidak(0.01, 6);

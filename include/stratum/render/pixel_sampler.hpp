@@ -134,16 +134,29 @@ class PixelSampler {
   /// pairs' keys depend on (seed, dimension) only and are derived once.
   std::optional<ZSobol> zsobol_;
   std::vector<ZSobol::Pair> zsobol_pairs_;
-  /// Per dimension: the pixel's permuted digits, valid when its stamp is this pixel's.
-  std::vector<std::uint64_t> zsobol_pixel_digits_, zsobol_stamps_;
+  /// Per dimension: the pixel's permuted digits, valid when its stamp is this
+  /// pixel's, and those of its 16 × 16 block of pixels (render's tile), valid
+  /// for the block in zsobol_blocks_: a tile's pixels share all digits above
+  /// the block's 4 levels, computed once per tile.
+  std::vector<std::uint64_t> zsobol_pixel_digits_, zsobol_stamps_, zsobol_block_digits_, zsobol_blocks_;
   std::uint64_t pixel_stamp_ = 0;
+  static constexpr unsigned zsobol_block_levels = 4;
   /// The sequence index of this pixel's current sample in `dimension`'s pair.
   std::uint64_t zsobol_index(std::uint32_t dimension) {
     while (zsobol_pairs_.size() <= dimension) zsobol_pairs_.push_back(zsobol_->pair(std::uint32_t(zsobol_pairs_.size())));
-    if (zsobol_stamps_.size() <= dimension) zsobol_stamps_.resize(dimension + 1, 0), zsobol_pixel_digits_.resize(dimension + 1);
+    if (zsobol_stamps_.size() <= dimension) {
+      zsobol_stamps_.resize(dimension + 1, 0), zsobol_pixel_digits_.resize(dimension + 1);
+      zsobol_blocks_.resize(dimension + 1, ~std::uint64_t{0}), zsobol_block_digits_.resize(dimension + 1);
+    }
     const ZSobol::Pair& pair = zsobol_pairs_[dimension];
     if (zsobol_stamps_[dimension] != pixel_stamp_) {
-      zsobol_pixel_digits_[dimension] = zsobol_->pixel_digits(pixel_x_, pixel_y_, pair);
+      const std::uint64_t block = (std::uint64_t{pixel_y_ >> zsobol_block_levels} << 32) | (pixel_x_ >> zsobol_block_levels);
+      if (zsobol_blocks_[dimension] != block) {
+        zsobol_block_digits_[dimension] = zsobol_->block_digits(pixel_x_, pixel_y_, pair, zsobol_block_levels);
+        zsobol_blocks_[dimension] = block;
+      }
+      zsobol_pixel_digits_[dimension] =
+          zsobol_->pixel_digits(pixel_x_, pixel_y_, pair, zsobol_block_digits_[dimension], zsobol_block_levels);
       zsobol_stamps_[dimension] = pixel_stamp_;
     }
     return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair);

@@ -85,6 +85,18 @@ class ZSobol {
   std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair) const noexcept {
     return permute_digits(morton(x, y) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_));
   }
+  /// The part of pixel_digits shared by the aligned 2^k × 2^k block of
+  /// pixels holding (x, y): its digits above the block's own k levels.
+  std::uint64_t block_digits(std::uint32_t x, std::uint32_t y, const Pair& pair, unsigned k) const noexcept {
+    return permute_digits(morton(x, y) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_ + 2 * k));
+  }
+  /// pixel_digits from the block's digits (block_digits(x, y, pair, k)):
+  /// only the k levels inside the block are permuted here.
+  std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair, std::uint64_t block,
+                             unsigned k) const noexcept {
+    const int top = std::min(int(log2_spp_ + 2 * k), int(index_bits_)) - 2;
+    return block | permute_digits(morton(x, y) << log2_spp_, pair, top, int(log2_spp_));
+  }
   /// pixel_digits(x, y, pair) with the permuted digits of sample `index` below them.
   std::uint64_t sample_digits(std::uint32_t x, std::uint32_t y, std::uint64_t pixel_part, std::uint64_t index,
                               const Pair& pair) const noexcept {
