@@ -1,5 +1,6 @@
 #include "stratum/render/compare.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -472,20 +473,15 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
     row.relative_mse = relative_mean_squared_error(image, references[estimand]);
     row.seconds = image.seconds;
     row.efficiency = 1 / (row.mse * row.seconds);
-    if (image.width >= 4 && image.height >= 4) {
+    if (image.width >= 4 && image.height >= 4) {  // else low_frequency_power stays NaN
       const std::vector<double> error = luminance_error(image, references[estimand]);
-      bool varies = false;  // a perfect render (zero error everywhere) has no spectrum
-      for (double e : error) varies = varies || e != error.front();
-      if (varies) {
+      // A perfect render (the same error everywhere) has no spectrum.
+      if (std::any_of(error.begin(), error.end(), [&](double e) { return e != error.front(); })) {
         const analysis::ImageSpectrum spectrum = analysis::image_spectrum(error, image.width, image.height);
         row.low_frequency_power = spectrum.low_frequency_power;
         row.error_radial_frequency = spectrum.radial_frequency;
         row.error_radial_power = spectrum.radial_power;
-      } else {
-        row.low_frequency_power = std::numeric_limits<double>::quiet_NaN();
       }
-    } else {
-      row.low_frequency_power = std::numeric_limits<double>::quiet_NaN();
     }
     if (!options.variance_dir.empty()) {
       row.variance_path = variance_file[index]->path();

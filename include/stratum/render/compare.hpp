@@ -4,6 +4,7 @@
 /// and efficiency = 1 / (MSE × seconds), with its ratio to the first
 /// configuration (the baseline).
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct CompareRow {
   /// of the luminance of render − reference, normalized so white noise is 1;
   /// low_frequency_power is its mean below a quarter of Nyquist (< 1: blue
   /// noise). NaN and empty for images under 4 pixels a side.
-  double low_frequency_power = 0;
+  double low_frequency_power = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> error_radial_frequency, error_radial_power;
   std::string variance_path;   ///< where its variance image was written (CompareOptions::variance_dir)
 };
