@@ -64,10 +64,8 @@ void run_converge(const ConvergeOptions& o) {
   sa::ConvergenceRequest request;
   request.integrand.name = o.integrand;
   request.integrand.d = static_cast<unsigned>(o.d.value_or(0));
-  for (const auto& item : o.integrand_params) {
-    const auto [key, value] = parse_key_value("integrand-param", item);
-    request.integrand.params[key] = sa::parse_integrand_param(key, value);
-  }
+  request.integrand.params =
+      sa::parse_integrand_params(o.integrand, parse_key_values("integrand-param", o.integrand_params));
   for (const auto& item : split_sampler_list(o.samplers)) {
     const SamplerSpec spec = combine_sampler_options(item, o.params, o.randomize);
     request.samplers.push_back({spec.name, spec.randomize, spec.params});

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "point_input.hpp"
+#include "stratum/analysis/catalogue.hpp"
 #include "stratum/analysis/measures.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
@@ -91,9 +92,7 @@ std::string measure_help() {
   std::string text = "measure name, or `all` (every measure defined for the points' d):";
   for (const auto& m : sa::measures()) {
     text += fmt::format("\n  {:<16} {}", m.name, m.description);
-    for (const auto& p : m.params)
-      text += fmt::format("\n  {:<18} --measure-param {}=… {}{}", "", p.name, p.description,
-                          p.default_value.empty() ? "" : " (default " + p.default_value + ")");
+    for (const auto& p : m.params) text += fmt::format("\n  {:<18} --measure-param {}", "", sa::describe_param(p));
   }
   return text;
 }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "schema_json.hpp"
 #include "sampler_options.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/util/error.hpp"
@@ -31,12 +32,9 @@ struct IntegrateOptions {
 void print_integrands(bool json) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& info : sa::integrands()) {
-    nlohmann::json params = nlohmann::json::array();
+    const nlohmann::json params = params_json(info.params);
     std::string param_text;
-    for (const auto& p : info.params) {
-      params.push_back({{"name", p.name}, {"description", p.description}, {"default", p.default_value}});
-      param_text += fmt::format(" {}={}", p.name, fmt::join(p.default_value, ","));
-    }
+    for (const auto& p : info.params) param_text += fmt::format(" {}={}", p.name, p.default_value);
     out.push_back({{"name", info.name}, {"description", info.description}, {"min_dim", info.min_dim},
                    {"max_dim", info.max_dim}, {"default_dim", info.default_dim}, {"properties", info.properties},
                    {"params", params}});
@@ -50,16 +48,6 @@ void print_integrands(bool json) {
 /// A number for JSON, null when not finite (no standard error, or efficiency +inf).
 nlohmann::json finite(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
-/// --integrand-param key=v1,v2 items into integrand parameters.
-sa::IntegrandParams parse_integrand_params(const std::vector<std::string>& items) {
-  sa::IntegrandParams params;
-  for (const auto& item : items) {
-    const auto [key, value] = parse_key_value("integrand-param", item);
-    params[key] = sa::parse_integrand_param(key, value);
-  }
-  return params;
-}
-
 void run_integrate(const IntegrateOptions& o) {
   if (o.list) return print_integrands(o.json);
   require(!o.integrand.empty(), "integrand", "(missing)", "give --integrand NAME (see `stratum integrate --list`)");
@@ -69,7 +57,7 @@ void run_integrate(const IntegrateOptions& o) {
           "must be a positive integer");
   require(o.runs >= 1 && o.runs <= 1000000, "runs", o.runs, "must be in [1, 1000000]");
   sa::IntegrationRequest request;
-  request.integrand = {o.integrand, static_cast<unsigned>(o.d.value_or(0)), parse_integrand_params(o.integrand_params)};
+  request.integrand = {o.integrand, static_cast<unsigned>(o.d.value_or(0)), sa::parse_integrand_params(o.integrand, parse_key_values("integrand-param", o.integrand_params))};
   const SamplerSpec spec = o.sampler.spec();
   request.sampler = {spec.name, spec.randomize, spec.params};
   request.n = static_cast<std::uint64_t>(*o.n);

@@ -7,14 +7,13 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "schema_json.hpp"
 #include "stratum/registry.hpp"
 
 namespace stratum::cli {
 
 static nlohmann::json sampler_json(const SamplerInfo& s) {
-  nlohmann::json params = nlohmann::json::array();
-  for (const auto& p : s.params)
-    params.push_back({{"name", p.name}, {"description", p.description}, {"default", p.default_value}});
+  const nlohmann::json params = params_json(s.params);
   return {{"name", s.name},         {"kind", s.kind},     {"description", s.description},
           {"min_dim", s.min_dim},   {"max_dim", s.max_dim}, {"properties", s.properties},
           {"randomizers", s.randomizers}, {"counts", s.counts}, {"params", params}};

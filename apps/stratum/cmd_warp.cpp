@@ -3,6 +3,7 @@
 /// .npy; files written atomically, so bad input never leaves a partial file).
 #include <fmt/core.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "point_input.hpp"
 #include "sampler_options.hpp"
 #include "stratum/io/points.hpp"
+#include "stratum/analysis/catalogue.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/warp_registry.hpp"
@@ -28,47 +30,41 @@ struct WarpOptions {
   bool list = false;
 };
 
-/// "1.5,2,-3" (or "@FILE": whitespace- or comma-separated numbers) as doubles.
-std::vector<double> parse_numbers(const std::string& key, const std::string& text) {
-  std::string body = text;
-  if (!text.empty() && text[0] == '@') {
-    // A regular file only: a FIFO or /dev/zero would never end.
-    body = io::read_regular_file(key, text.substr(1), std::uint64_t{1} << 30);
+/// A --warp-param value as the schema's comma-separated text: "1.5,2,-3" as
+/// given, or "@FILE" read (its numbers separated by whitespace or commas).
+std::string warp_param_text(const std::string& key, const std::string& text) {
+  if (text.empty() || text[0] != '@') return text;
+  // A regular file only: a FIFO or /dev/zero would never end.
+  const std::string body = io::read_regular_file(key, text.substr(1), std::uint64_t{1} << 30);
+  std::string numbers;
+  std::string word;
+  const auto flush = [&] {
+    if (!word.empty()) numbers += (numbers.empty() ? "" : ",") + word;
+    word.clear();
+  };
+  for (char c : body) {
+    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) flush();
+    else word += c;
   }
-  for (char& c : body)
-    if (c == ',' || c == '\n' || c == '\t' || c == '\r') c = ' ';
-  std::vector<double> values;
-  std::istringstream words(body);
-  for (std::string word; words >> word;) {
-    char* end = nullptr;
-    const double value = std::strtod(word.c_str(), &end);
-    if (end != word.c_str() + word.size()) throw invalid_argument(key, word, "must be a number");
-    values.push_back(value);
-  }
-  require(!values.empty(), key, text.empty() ? "''" : text, "needs at least one number");
-  return values;
+  flush();
+  return numbers;
 }
 
 void list_warps() {
   for (const auto& info : warps()) {
     std::string params;
-    for (const auto& spec : info.params) params += (params.empty() ? "" : "; ") + spec.name + ": " + spec.description;
+    for (const auto& param : info.params) params += "\n    " + analysis::describe_param(param);
     fmt::print("{:<32} {} (domain {}, pdf per {}{}){}\n", info.name, info.description, info.domain, info.measure,
-               info.area_preserving ? ", area-preserving" : "", params.empty() ? "" : "\n    params: " + params);
+               info.area_preserving ? ", area-preserving" : "", params);
   }
 }
 
 void run_warp(const WarpOptions& options) {
   if (options.list) return list_warps();
   require(options.n >= 1, "n", options.n, "must be a positive integer");
-  WarpParams params;
-  for (const auto& item : options.warp_params) {
-    const auto equals = item.find('=');
-    if (equals == std::string::npos || equals == 0)
-      throw invalid_argument("warp-param", item, "must be written key=v1,v2,... or key=@FILE");
-    const std::string key = item.substr(0, equals);
-    params[key] = parse_numbers(key, item.substr(equals + 1));
-  }
+  std::map<std::string, std::string> texts = parse_key_values("warp-param", options.warp_params);
+  for (auto& [key, text] : texts) text = warp_param_text(key, text);
+  const WarpParams params = parse_warp_params(options.map, texts);
   TableOutput table_output(options.output, options.format);  // checked before the work
   const auto warp = make_warp(options.map, params);
   const SamplerSpec spec = options.sampler.spec();

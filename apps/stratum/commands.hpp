@@ -4,6 +4,7 @@
 
 namespace stratum::cli {
 void add_samplers_command(CLI::App& app);     // cmd_samplers.cpp
+void add_describe_command(CLI::App& app);     // cmd_describe.cpp
 void add_points_command(CLI::App& app);       // cmd_points.cpp
 void add_warp_command(CLI::App& app);         // cmd_warp.cpp
 void add_integrate_command(CLI::App& app);    // cmd_integrate.cpp

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("stratum ") + STRATUM_VERSION_TEXT, "print the version and exit");
   stratum::cli::add_samplers_command(app);
+  stratum::cli::add_describe_command(app);
   stratum::cli::add_points_command(app);
   stratum::cli::add_warp_command(app);
   stratum::cli::add_integrate_command(app);

@@ -16,15 +16,9 @@
 #include <string_view>
 #include <vector>
 
-namespace stratum {
+#include "stratum/registry/params.hpp"
 
-/// A sampler-specific parameter, given as text ("periodic=1",
-/// "generator=1,55,133") so that every face passes it through unchanged.
-struct ParamSpec {
-  std::string name;
-  std::string description;
-  std::string default_value;  ///< empty: no default (optional)
-};
+namespace stratum {
 
 /// What a caller asks of a sampler.
 struct SamplerRequest {
@@ -35,7 +29,11 @@ struct SamplerRequest {
   std::string randomize;           ///< empty: the sampler's default
   std::optional<double> radius;    ///< Poisson disk and friends
   unsigned threads = 1;
-  std::map<std::string, std::string> params;
+  std::map<std::string, std::string> params;  ///< as text ("periodic=1"): every face passes it through unchanged
+  /// `params` bound to the sampler's schema (parsed, checked, defaults
+  /// filled in) by validate_request and generate_points; entries read
+  /// their parameters here.
+  ParamValues values{};
 };
 
 /// n points of d coordinates, row-major; the buffer is handed to numpy or a
@@ -57,7 +55,7 @@ struct SamplerInfo {
   std::vector<std::string> randomizers;  ///< accepted values of --randomize; front() is the default
   std::string counts;                    ///< which n the sampler takes, in words
   bool n_optional = false;               ///< may n be left out (then `radius` decides)?
-  std::vector<ParamSpec> params;
+  std::vector<Param> params;  ///< the schema of `SamplerRequest::params`
   /// Checks the sampler-specific part of a request (n it can take, params);
   /// throws stratum::invalid_argument.
   std::function<void(const SamplerRequest&)> validate;

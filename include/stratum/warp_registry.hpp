@@ -13,18 +13,14 @@
 #include <string_view>
 #include <vector>
 
+#include "stratum/registry/params.hpp"
+
 namespace stratum {
 
 /// Warp parameters by name, each a flat list of numbers: `cos_theta_max` is
 /// {0.5}, `vertices` of a triangle is 6 or 9 numbers (row-major 3×2 or 3×3),
 /// a tabulated function is its values with `width`/`height` beside them.
 using WarpParams = std::map<std::string, std::vector<double>>;
-
-struct WarpParamSpec {
-  std::string name;
-  std::string description;  ///< includes the expected shape, e.g. "3x3 vertices"
-  std::vector<double> default_value;  ///< empty: required
-};
 
 /// A warp with its parameters validated once; the array calls do no checks
 /// beyond what the registry's entry points (below) do first.
@@ -47,7 +43,7 @@ struct WarpInfo {
   std::string domain;   ///< "disk", "hemisphere", "sphere", "interval", ...
   std::string measure;  ///< what the pdf is per: "area", "solid angle", "length"
   bool area_preserving = false;  ///< constant Jacobian: strata map to equal-measure cells
-  std::vector<WarpParamSpec> params;
+  std::vector<Param> params;  ///< numbers: integer, real, integers or reals
   /// Validates `params` (defaults already filled in) and builds the warp;
   /// throws stratum::invalid_argument naming the parameter.
   std::function<std::unique_ptr<const Warp>(const WarpParams&)> make;
@@ -59,8 +55,13 @@ const std::vector<WarpInfo>& warps();
 /// The warp called `name`; throws invalid_argument listing the valid names.
 const WarpInfo& find_warp(std::string_view name);
 
-/// Fills defaults, rejects unknown parameter names, then calls info.make.
+/// Checks `params` against the warp's schema (unknown names, counts,
+/// ranges), fills defaults, then calls info.make.
 std::unique_ptr<const Warp> make_warp(std::string_view name, const WarpParams& params);
+
+/// Parameters given as text (the CLI's `--warp-param KEY=1,2,3`), parsed by
+/// the schema's one parser.
+WarpParams parse_warp_params(std::string_view name, const std::map<std::string, std::string>& text);
 
 /// Registry entry points with input checks: u must be finite and in [0,1)
 /// (the message names the row and column); p must be finite.

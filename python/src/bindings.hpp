@@ -2,7 +2,16 @@
 /// The compiled module's parts, one source file each (python/src/*.cpp).
 #include <pybind11/pybind11.h>
 
+#include <vector>
+
+#include "stratum/registry/params.hpp"
+
 namespace stratum::python {
+void bind_schema(pybind11::module_& m);    // schema.cpp: _describe
+/// One parameter of the schema as a dict (name, type, description, default,
+/// range, choices, length, separator): every listing's "params".
+pybind11::dict param_dict(const Param& param);
+pybind11::list params_list(const std::vector<Param>& params);
 void bind_warps(pybind11::module_& m);     // warps.cpp: warp, warp_pdf, warp_invert, warps
 void bind_measures(pybind11::module_& m);  // measures.cpp: measure, measures, scipy-compatible discrepancy
 void bind_spectra(pybind11::module_& m);   // spectra.cpp: periodogram, radial power, anisotropy

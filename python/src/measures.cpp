@@ -34,10 +34,7 @@ sa::PointView view_of(const Array& x) {
 py::list measure_list() {
   py::list list;
   for (const auto& m : sa::measures()) {
-    py::list params;
-    for (const auto& p : m.params)
-      params.append(py::dict(py::arg("name") = p.name, py::arg("description") = p.description,
-                             py::arg("default") = p.default_value));
+    const py::list params = params_list(m.params);
     list.append(py::dict(py::arg("name") = m.name, py::arg("description") = m.description,
                          py::arg("min_dim") = m.min_dim, py::arg("max_dim") = m.max_dim, py::arg("params") = params));
   }

@@ -22,10 +22,7 @@ py::array_t<double> to_numpy(stratum::PointSet points) {
 py::list sampler_list() {
   py::list list;
   for (const auto& s : stratum::samplers()) {
-    py::list params;
-    for (const auto& p : s.params)
-      params.append(py::dict(py::arg("name") = p.name, py::arg("description") = p.description,
-                             py::arg("default") = p.default_value));
+    const py::list params = stratum::python::params_list(s.params);
     list.append(py::dict(py::arg("name") = s.name, py::arg("kind") = s.kind,
                          py::arg("description") = s.description, py::arg("min_dim") = s.min_dim,
                          py::arg("max_dim") = s.max_dim, py::arg("properties") = s.properties,
@@ -90,6 +87,7 @@ PYBIND11_MODULE(_stratum, m) {
   m.def("resolve_threads", &stratum::resolve_threads, py::arg("threads"),
         "The thread rule of every face: 0 = every core, else 1..1024");
   m.def("parse_seed", &stratum::parse_seed, py::arg("text"), "A seed: exactly the integers in [0, 2^64)");
+  stratum::python::bind_schema(m);
   stratum::python::bind_warps(m);
   stratum::python::bind_measures(m);
   stratum::python::bind_spectra(m);

@@ -34,10 +34,7 @@ py::array_t<double> to_array(const std::vector<double>& values) {
 py::list integrand_list() {
   py::list list;
   for (const auto& info : sa::integrands()) {
-    py::list params;
-    for (const auto& p : info.params)
-      params.append(py::dict(py::arg("name") = p.name, py::arg("description") = p.description,
-                             py::arg("default") = p.default_value));
+    const py::list params = params_list(info.params);
     list.append(py::dict(py::arg("name") = info.name, py::arg("description") = info.description,
                          py::arg("min_dim") = info.min_dim, py::arg("max_dim") = info.max_dim,
                          py::arg("default_dim") = info.default_dim, py::arg("properties") = info.properties,

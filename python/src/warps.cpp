@@ -23,10 +23,7 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 py::list warp_list() {
   py::list list;
   for (const auto& w : warps()) {
-    py::list params;
-    for (const auto& p : w.params)
-      params.append(py::dict(py::arg("name") = p.name, py::arg("description") = p.description,
-                             py::arg("default") = p.default_value));
+    const py::list params = params_list(w.params);
     list.append(py::dict(py::arg("name") = w.name, py::arg("description") = w.description,
                          py::arg("domain") = w.domain, py::arg("measure") = w.measure,
                          py::arg("area_preserving") = w.area_preserving, py::arg("params") = params));

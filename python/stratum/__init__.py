@@ -24,7 +24,7 @@ from .spectra import *  # noqa: F401,F403  spectrum
 from .studies import *  # noqa: F401,F403  integrands, integrate, converge, studies
 from .warps import *  # noqa: F401,F403  warp, warp_pdf, warp_invert
 
-__all__ = ["samplers", "randomizers", "points", "parse_spec", "format_spec", "InvalidArgument", "qmc"] + (
+__all__ = ["samplers", "randomizers", "describe", "points", "parse_spec", "format_spec", "InvalidArgument", "qmc"] + (
     _measures.__all__ + _mitchell.__all__ + _render.__all__ + _report.__all__ + _spectra.__all__ + _studies.__all__ + _warps.__all__)
 
 
@@ -41,6 +41,24 @@ def samplers() -> list[dict]:
     """Every sampler: name, kind, description, min_dim, max_dim, properties,
     randomizers (default first), counts (which n it takes) and params."""
     return _stratum.samplers()
+
+
+def describe(name: str, kind: str | None = None) -> dict | list[dict]:
+    """The parameters of a sampler, measure, warp or integrand, from the one
+    schema the CLI and the docs use: a dict with kind, name, description and
+    params (each with name, type, description, default, and range, choices,
+    length, separator where they apply). A name in two registries (a warp and
+    an integrand, say) gives a list unless `kind` picks one.
+
+    >>> stratum.describe("poisson-disk")["params"][0]["range"]
+    {'min': 1.0, 'max': 100000.0, 'min_open': False, 'max_open': False}
+    """
+    if not isinstance(name, str):
+        raise InvalidArgument(f"invalid name = {name!r}: must be a string (a sampler, measure, warp or integrand)")
+    if kind is not None and not isinstance(kind, str):
+        raise InvalidArgument(f"invalid kind = {kind!r}: must be sampler, measure, warp or integrand")
+    found = _stratum._describe(name, kind or "")
+    return found[0] if len(found) == 1 else found
 
 
 def randomizers() -> list[tuple[str, str]]:

@@ -142,7 +142,7 @@ def test_converge_rates_and_thread_invariance():
     (lambda: stratum.integrate("disk", n=4, d=3), "d = 3"),
     (lambda: stratum.integrate("genz-gaussian", n=4, a=[1, 2, 3]), "a = 3 numbers"),
     (lambda: stratum.integrate("genz-gaussian", n=4, a="x"), "a = 'x'"),
-    (lambda: stratum.integrate("genz-gaussian", n=4, bogus=1), "parameter = bogus"),
+    (lambda: stratum.integrate("genz-gaussian", n=4, bogus=1), "integrand-param = bogus=1: genz-gaussian takes a, u"),
     (lambda: stratum.integrate("disk", n=4, runs=0), "runs = 0"),
     (lambda: stratum.converge("disk", "random", "16:100"), "powers of two"),
     (lambda: stratum.converge("disk", "random", [64, 16]), "n = 16"),

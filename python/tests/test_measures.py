@@ -23,7 +23,8 @@ def test_measures_lists_the_registry():
         assert m["description"] and m["min_dim"] >= 1
         assert m["max_dim"] == 0 or m["max_dim"] >= m["min_dim"]
         for p in m["params"]:
-            assert set(p) == {"name", "description", "default"}
+            assert {"name", "type", "description", "default"} <= set(p)
+            assert p["type"] in ("integer", "real", "integers", "reals", "choice", "flag", "text")
 
 
 def test_measure_result_shape_and_l2_convention():
@@ -93,7 +94,7 @@ def test_non_contiguous_and_integer_input():
         ([[0.1, 0.2, 0.3], [0.3, 0.4, 0.5]], dict(name="edge"), ["d = 3", "edge"]),
         (np.full((4, 5), 0.5), dict(name="l2-star", algorithm="fast"), ["algorithm = fast", "warnock"]),
         ([[0.1, 0.2], [0.3, 0.4]], dict(name="l2-star", algorithm="quick"), ["algorithm = quick", "auto"]),
-        ([[0.1, 0.2], [0.3, 0.4]], dict(name="cd", lines=5), ["parameter = lines", "cd takes no parameters"]),
+        ([[0.1, 0.2], [0.3, 0.4]], dict(name="cd", lines=5), ["measure-param = lines=5", "cd takes no parameters"]),
         ([[0.1, 0.2], [0.3, 0.4]], dict(name="cd", threads=-1), ["threads = -1"]),
         ([[0.1, 0.2], [0.3, 0.4]], dict(name=3), ["measure = 3"]),
         (np.zeros((2, 2, 2)), dict(name="cd"), ["shape (2, 2, 2)"]),

@@ -96,7 +96,7 @@ def test_star_threads_do_not_change_result():
         ((300, 6), {"method": "exact"}, "method=bounds"),
         ((10, 2), {"method": "fast"}, "invalid method = fast"),
         ((10, 2), {"method": "bounds", "delta": 1.5}, "invalid delta = 1.5"),
-        ((10, 2), {"lines": 5}, "invalid parameter = lines"),
+        ((10, 2), {"lines": 5}, "invalid measure-param = lines=5: star takes"),
         ((1, 2), {}, "invalid n = 1"),
     ],
 )

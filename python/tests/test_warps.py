@@ -115,7 +115,7 @@ def test_bad_input():
         stratum.warp("disk-polar", uniforms(5, 3))
     with pytest.raises(ValueError, match=r"invalid p\[0\]\[2\] = inf"):
         stratum.warp_pdf("sphere-uniform", [[0, 0, np.inf]])
-    with pytest.raises(ValueError, match="invalid parameter = radius"):
+    with pytest.raises(ValueError, match="invalid warp-param = radius=2: disk-polar takes no parameters"):
         stratum.warp("disk-polar", u, radius=2)
     with pytest.raises(ValueError, match="invalid cos_theta_max"):
         stratum.warp("cone", u, cos_theta_max="wide")

@@ -161,11 +161,11 @@ def test_alias_index_frequencies_chi_square():
     ("spherical-rectangle", dict(edge_u=[1, 0, 0], edge_v=[2, 0, 0]), "must not be parallel to edge_u"),
     ("spherical-rectangle-projected", dict(origin=[3, 3, 1]), "invalid origin = (3, 3, 1): must not lie on the rectangle's plane"),
     ("spherical-triangle-projected", dict(normal=[0, 0, 0]), "invalid normal = (0, 0, 0)"),
-    ("piecewise-1d", dict(values=[1, -1], width=2), "invalid values[1] = -1: must be finite and non-negative"),
+    ("piecewise-1d", dict(values=[1, -1], width=2), "invalid values[1] = -1: must be a finite real in [0, inf)"),
     ("piecewise-1d", dict(values=[0, 0], width=2), "all 2 values zero"),
-    ("piecewise-1d", dict(values=[1, np.inf], width=2), "must be finite"),
+    ("piecewise-1d", dict(values=[1, np.inf], width=2), "invalid values[1] = inf: must be a finite real"),
     ("piecewise-2d", dict(values=[1, 2, 3], width=2, height=2), "must hold width × height = 2 × 2 = 4 values"),
-    ("piecewise-2d", dict(values=[1, 2], width=2, height=0.5), "invalid height = 0.5: must be a positive integer"),
+    ("piecewise-2d", dict(values=[1, 2], width=2, height=0.5), "invalid height = 0.5: must be an integer in [1, 2^40]"),
     ("alias", dict(values=[0, 0, 0]), "all 3 values zero"),
 ])
 def test_bad_input_names_parameter_and_value(name, params, text):

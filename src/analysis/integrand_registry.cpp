@@ -31,6 +31,12 @@ const IntegrandInfo& find_integrand(std::string_view name) {
   throw invalid_argument("integrand", name.empty() ? "''" : std::string(name), "valid integrands are " + names);
 }
 
+/// The schema's entry for `key`, or an error listing what the integrand takes.
+static const Param& integrand_param(const IntegrandInfo& info, const std::string& key, const std::string& value_text) {
+  if (const Param* param = find_param(info.params, key)) return *param;
+  refuse_unknown_param(info.name, info.params, key, value_text, "integrand-param");
+}
+
 std::unique_ptr<const Integrand> make_integrand(std::string_view name, unsigned d, const IntegrandParams& params) {
   const IntegrandInfo& info = find_integrand(name);
   if (d == 0) d = info.default_dim;
@@ -38,44 +44,21 @@ std::unique_ptr<const Integrand> make_integrand(std::string_view name, unsigned 
           info.name + " is defined for d in [" + std::to_string(info.min_dim) + ", " + std::to_string(info.max_dim) +
               "]");
   IntegrandParams filled;
-  for (const auto& spec : info.params) filled[spec.name] = spec.default_value;
+  for (const auto& param : info.params) filled[param.name] = as_reals(parse_param(param, param.default_value));
   for (const auto& [key, values] : params) {
-    if (!filled.count(key)) {
-      std::string names;
-      for (const auto& spec : info.params) names += (names.empty() ? "" : ", ") + spec.name;
-      throw invalid_argument("parameter", key, info.name + (names.empty() ? " takes no parameters" : " takes " + names));
-    }
-    require(!values.empty(), key, "(empty)", "needs at least one number");
-    for (double v : values) require(std::isfinite(v), key, v, "values must be finite");
+    std::string text;
+    for (double v : values) text += (text.empty() ? "" : ",") + to_message_string(v);
+    check_param(integrand_param(info, key, text), values);
     filled[key] = values;
   }
   return info.make(d, filled);
 }
 
-std::vector<double> parse_integrand_param(std::string_view name, std::string_view text) {
-  std::vector<double> values;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
-    std::size_t used = 0;
-    double value = 0;
-    bool ok = !item.empty();
-    if (ok) {
-      try {
-        value = std::stod(item, &used);
-      } catch (const std::exception&) {
-        ok = false;
-      }
-    }
-    if (!ok || used != item.size() || !std::isfinite(value))
-      throw invalid_argument(name, text.empty() ? "''" : std::string(text),
-                             "must be finite numbers separated by commas");
-    values.push_back(value);
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return values;
+IntegrandParams parse_integrand_params(std::string_view integrand, const std::map<std::string, std::string>& text) {
+  const IntegrandInfo& info = find_integrand(integrand);
+  IntegrandParams params;
+  for (const auto& [key, value] : text) params[key] = as_reals(parse_param(integrand_param(info, key, value), value));
+  return params;
 }
 
 std::vector<double> evaluate_integrand(const Integrand& integrand, const double* points, std::size_t n) {

@@ -109,13 +109,10 @@ std::vector<IntegrandInfo> planar() {
                            "1[(x - p).n < 0] for a point p uniform in the square and a direction n uniform on the "
                            "circle, both from `seed`; exact area by clipping the square",
                            {"indicator", "discontinuous", "random edge"});
-  edge.params = {{"seed", "which random edge (an integer in [0, 2^53))", {0}}};
+  // The integrands' numbers travel as doubles: seeds stop at 2^53, where doubles stop being exact.
+  edge.params = {params::integer("seed", "which random edge", "0", half_open(0, 0x1p53))};
   edge.make = [](unsigned, const IntegrandParams& params) {
-    const double seed_value = params.at("seed").front();
-    require(params.at("seed").size() == 1 && seed_value >= 0 && seed_value < 0x1p53 &&
-                seed_value == std::floor(seed_value),
-            "seed", seed_value, "must be one integer in [0, 2^53)");
-    const auto seed = static_cast<std::uint64_t>(seed_value);
+    const auto seed = static_cast<std::uint64_t>(params.at("seed").front());
     const Point p{uniform01(seed, 0), uniform01(seed, 1)};
     const double angle = 2 * std::numbers::pi * uniform01(seed, 2);
     const Point normal{std::cos(angle), std::sin(angle)};

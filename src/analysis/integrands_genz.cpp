@@ -22,22 +22,16 @@ namespace stratum::analysis::integrand_families {
 namespace {
 
 /// a or u expanded to d numbers (one number is repeated); checks the length
-/// and, when `positive`, that each is > 0, or when `unit`, that each is in [0, 1].
-std::vector<double> expand(const IntegrandParams& params, const std::string& name, unsigned d, bool positive,
-                           bool unit) {
+/// (the schema has checked each number's range).
+std::vector<double> expand(const IntegrandParams& params, const std::string& name, unsigned d) {
   const auto& given = params.at(name);
   require(given.size() == 1 || given.size() == d, name, std::to_string(given.size()) + " numbers",
           "needs 1 number or d = " + std::to_string(d) + " numbers");
-  std::vector<double> values = given.size() == 1 ? std::vector<double>(d, given.front()) : given;
-  for (double v : values) {
-    if (positive) require(v > 0, name, v, "values must be positive");
-    if (unit) require(v >= 0 && v <= 1, name, v, "values must lie in [0, 1]");
-  }
-  return values;
+  return given.size() == 1 ? std::vector<double>(d, given.front()) : given;
 }
 
 IntegrandInfo genz_entry(std::string name, std::string description, std::vector<std::string> properties,
-                         unsigned max_dim, std::string a_description) {
+                         unsigned max_dim, std::string a_description, Range a_range) {
   IntegrandInfo info;
   info.name = std::move(name);
   info.description = std::move(description);
@@ -45,8 +39,10 @@ IntegrandInfo genz_entry(std::string name, std::string description, std::vector<
   info.max_dim = max_dim;
   info.default_dim = 2;
   info.properties = std::move(properties);
-  info.params = {{"a", std::move(a_description) + "; 1 number (every dimension) or d numbers", {5.0}},
-                 {"u", "location in [0, 1]; 1 number (every dimension) or d numbers", {0.5}}};
+  info.params = {params::reals("a", std::move(a_description) + "; 1 number (every dimension) or d numbers", "5",
+                               a_range, {1, max_dim}),
+                 params::reals("u", "location; 1 number (every dimension) or d numbers", "0.5", closed(0, 1),
+                               {1, max_dim})};
   return info;
 }
 
@@ -75,10 +71,10 @@ std::vector<IntegrandInfo> genz() {
   constexpr unsigned max_dim = 1024;
 
   auto oscillatory = genz_entry("genz-oscillatory", "cos(2 pi u_1 + sum a_i x_i) (Genz 1984, oscillatory)",
-                                {"smooth", "oscillatory"}, max_dim, "frequency, any finite number");
+                                {"smooth", "oscillatory"}, max_dim, "frequency", any_real());
   oscillatory.make = [](unsigned d, const IntegrandParams& params) {
-    const auto a = expand(params, "a", d, false, false);
-    const auto u = expand(params, "u", d, false, true);
+    const auto a = expand(params, "a", d);
+    const auto u = expand(params, "u", d);
     // ∫_0^1 e^{i a x} dx = e^{i a/2} sin(a/2)/(a/2): the real part of the product.
     double phase = 2 * std::numbers::pi * u[0];
     double amplitude = 1;
@@ -96,10 +92,10 @@ std::vector<IntegrandInfo> genz() {
   list.push_back(std::move(oscillatory));
 
   auto product_peak = genz_entry("genz-product-peak", "prod (a_i^-2 + (x_i - u_i)^2)^-1 (Genz 1984, product peak)",
-                                 {"smooth", "peak"}, max_dim, "peak sharpness, positive");
+                                 {"smooth", "peak"}, max_dim, "peak sharpness", above(0));
   product_peak.make = [](unsigned d, const IntegrandParams& params) {
-    const auto a = expand(params, "a", d, true, false);
-    const auto u = expand(params, "u", d, false, true);
+    const auto a = expand(params, "a", d);
+    const auto u = expand(params, "u", d);
     double exact = 1;  // ∫_0^1 dx / (a^-2 + (x−u)²) = a (atan(a(1−u)) + atan(a u))
     for (unsigned j = 0; j < d; ++j) exact *= a[j] * (std::atan(a[j] * (1 - u[j])) + std::atan(a[j] * u[j]));
     return make_function_integrand(d, exact, [a, u](const double* x) {
@@ -112,10 +108,10 @@ std::vector<IntegrandInfo> genz() {
 
   // d ≤ 50 keeps d! Π a_j and the integral itself inside double range for a ≈ 5.
   auto corner_peak = genz_entry("genz-corner-peak", "(1 + sum a_i x_i)^-(d+1) (Genz 1984, corner peak; u unused)",
-                                {"smooth", "peak"}, 50, "peak sharpness, positive");
+                                {"smooth", "peak"}, 50, "peak sharpness", above(0));
   corner_peak.make = [](unsigned d, const IntegrandParams& params) {
-    const auto a = expand(params, "a", d, true, false);
-    expand(params, "u", d, false, true);  // accepted for a uniform interface, checked, unused
+    const auto a = expand(params, "a", d);
+    expand(params, "u", d);  // accepted for a uniform interface, checked, unused
     const double exponent = -static_cast<double>(d) - 1;
     return make_function_integrand(d, corner_peak_integral(a), [a, exponent](const double* x) {
       double sum = 1;
@@ -126,10 +122,10 @@ std::vector<IntegrandInfo> genz() {
   list.push_back(std::move(corner_peak));
 
   auto gaussian = genz_entry("genz-gaussian", "exp(-sum a_i^2 (x_i - u_i)^2) (Genz 1984, Gaussian)", {"smooth", "peak"},
-                             max_dim, "width^-1, positive");
+                             max_dim, "width^-1", above(0));
   gaussian.make = [](unsigned d, const IntegrandParams& params) {
-    const auto a = expand(params, "a", d, true, false);
-    const auto u = expand(params, "u", d, false, true);
+    const auto a = expand(params, "a", d);
+    const auto u = expand(params, "u", d);
     double exact = 1;  // ∫_0^1 e^{−a²(x−u)²} dx = √π/(2a) (erf(a(1−u)) + erf(a u))
     for (unsigned j = 0; j < d; ++j)
       exact *= std::sqrt(std::numbers::pi) / (2 * a[j]) * (std::erf(a[j] * (1 - u[j])) + std::erf(a[j] * u[j]));
@@ -142,10 +138,10 @@ std::vector<IntegrandInfo> genz() {
   list.push_back(std::move(gaussian));
 
   auto continuous = genz_entry("genz-continuous", "exp(-sum a_i |x_i - u_i|) (Genz 1984, continuous; a kink at u)",
-                               {"continuous", "kink"}, max_dim, "decay rate, positive");
+                               {"continuous", "kink"}, max_dim, "decay rate", above(0));
   continuous.make = [](unsigned d, const IntegrandParams& params) {
-    const auto a = expand(params, "a", d, true, false);
-    const auto u = expand(params, "u", d, false, true);
+    const auto a = expand(params, "a", d);
+    const auto u = expand(params, "u", d);
     double exact = 1;  // ∫_0^1 e^{−a|x−u|} dx = (2 − e^{−a u} − e^{−a(1−u)}) / a
     for (unsigned j = 0; j < d; ++j) exact *= (2 - std::exp(-a[j] * u[j]) - std::exp(-a[j] * (1 - u[j]))) / a[j];
     return make_function_integrand(d, exact, [a, u](const double* x) {
@@ -159,10 +155,10 @@ std::vector<IntegrandInfo> genz() {
   auto discontinuous = genz_entry(
       "genz-discontinuous",
       "exp(sum a_i x_i) where x_1 <= u_1 and x_2 <= u_2, else 0 (Genz 1984, discontinuous; u_3.. unused)",
-      {"discontinuous"}, max_dim, "growth rate, any finite number");
+      {"discontinuous"}, max_dim, "growth rate", any_real());
   discontinuous.make = [](unsigned d, const IntegrandParams& params) {
-    const auto a = expand(params, "a", d, false, false);
-    const auto u = expand(params, "u", d, false, true);
+    const auto a = expand(params, "a", d);
+    const auto u = expand(params, "u", d);
     double exact = 1;  // ∫_0^v e^{a x} dx = expm1(a v)/a (= v at a = 0), v = u_j for j < 2, else 1
     for (unsigned j = 0; j < d; ++j) {
       const double v = j < 2 ? u[j] : 1.0;

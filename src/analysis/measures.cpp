@@ -52,17 +52,10 @@ MeasureResult compute_measure(std::string_view name, const PointView& points, co
     throw invalid_argument("d", std::to_string(points.d),
                            info.name + " is defined for d in [" + std::to_string(info.min_dim) + ", " +
                                (info.max_dim == 0 ? std::string("any") : std::to_string(info.max_dim)) + "]");
-  for (const auto& [key, value] : request.params) {
-    bool known = false;
-    for (const auto& spec : info.params) known = known || spec.name == key;
-    if (!known) {
-      std::string names;
-      for (const auto& spec : info.params) names += (names.empty() ? "" : ", ") + spec.name;
-      throw invalid_argument("parameter", key, info.name + (names.empty() ? " takes no parameters" : " takes " + names));
-    }
-  }
-  if (info.validate) info.validate(points, request);
-  return info.compute(points, request);
+  MeasureRequest bound = request;
+  bound.values = bind_params(info.name, info.params, request.params, "measure-param");
+  if (info.validate) info.validate(points, bound);
+  return info.compute(points, bound);
 }
 
 }  // namespace stratum::analysis

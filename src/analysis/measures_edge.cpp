@@ -14,26 +14,6 @@ namespace {
 
 constexpr std::uint64_t max_lines = std::uint64_t{1} << 32;
 
-/// The request's integer parameter `name` (its default when absent), checked to lie in [low, high].
-std::uint64_t integer_param(const MeasureRequest& request, const std::string& name, std::uint64_t fallback,
-                            std::uint64_t low, std::uint64_t high, const std::string& allowed) {
-  const auto found = request.params.find(name);
-  if (found == request.params.end()) return fallback;
-  const std::string& text = found->second;
-  std::uint64_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  const bool parsed = !text.empty() && text[0] != '-' && error == std::errc{} && end == text.data() + text.size();
-  if (!parsed || value < low || value > high) throw invalid_argument(name, text.empty() ? "''" : text, allowed);
-  return value;
-}
-
-std::uint64_t lines_param(const MeasureRequest& request) {
-  return integer_param(request, "lines", 10000, 1, max_lines, "must be an integer in [1, 2^32]");
-}
-std::uint64_t seed_param(const MeasureRequest& request) {
-  return integer_param(request, "seed", 0, 0, UINT64_MAX, "must be an integer in [0, 2^64 - 1]");
-}
-
 }  // namespace
 
 std::vector<MeasureInfo> edge() {
@@ -62,15 +42,13 @@ std::vector<MeasureInfo> edge() {
                      "from the motion-invariant measure; extras mean and max",
       .min_dim = 2,
       .max_dim = 2,
-      .params = {{"lines", "number of random lines L", "10000"}, {"seed", "seed of the random lines", "0"}},
-      .validate = [](const PointView&, const MeasureRequest& request) {
-        lines_param(request);
-        seed_param(request);
-      },
+      .params = {params::integer("lines", "number of random lines L", "10000", closed(1, double(max_lines))),
+                 params::integer("seed", "seed of the random lines", "0", half_open(0, 0x1p64))},
+      .validate = nullptr,
       .compute =
           [](const PointView& points, const MeasureRequest& request) {
             const auto estimate =
-                random_edge_discrepancy(points, lines_param(request), seed_param(request), request.threads);
+                random_edge_discrepancy(points, request.values.unsigned_integer("lines"), request.values.unsigned_integer("seed"), request.threads);
             MeasureResult result;
             result.value = estimate.rms;
             result.kind = "estimate";

@@ -13,30 +13,9 @@
 namespace stratum::analysis::measure_families {
 namespace {
 
-std::string param_or(const MeasureRequest& request, const std::string& name, const std::string& fallback) {
-  const auto it = request.params.find(name);
-  return it == request.params.end() ? fallback : it->second;
-}
+std::uint64_t base_of(const MeasureRequest& request) { return request.values.unsigned_integer("base"); }
 
-std::uint64_t base_of(const MeasureRequest& request) {
-  const std::string text = param_or(request, "base", "2");
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long value = std::strtoull(begin, &end, 10);
-  const bool integer = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos && errno == 0 &&
-                       end == begin + text.size();
-  if (!integer || value < 2 || value > 65536)
-    throw invalid_argument("base", text.empty() ? "''" : text, "must be an integer in [2, 65536]");
-  return value;
-}
-
-bool toroidal_of(const MeasureRequest& request, const std::string& fallback) {
-  const std::string text = param_or(request, "toroidal", fallback);
-  if (text == "1" || text == "true" || text == "yes") return true;
-  if (text == "0" || text == "false" || text == "no") return false;
-  throw invalid_argument("toroidal", text.empty() ? "''" : text, "allowed: 0 or 1 (also true/false)");
-}
+bool toroidal_of(const MeasureRequest& request) { return request.values.flag("toroidal"); }
 
 MeasureInfo t_value_measure() {
   MeasureInfo info;
@@ -44,8 +23,7 @@ MeasureInfo t_value_measure() {
   info.description =
       "t-value of a (t,m,s)-net in base b: the smallest t such that every elementary interval of volume b^(t-m) holds "
       "b^t points, N = b^m (Niederreiter 1992, Def. 4.1); extras m, base";
-  info.params = {{"base", "the net's base b (integer >= 2); N must be a power of b", "2"}};
-  info.validate = [](const PointView&, const MeasureRequest& request) { base_of(request); };
+  info.params = {params::integer("base", "the net's base b; N must be a power of b", "2", closed(2, 65536))};
   info.compute = [](const PointView& points, const MeasureRequest& request) {
     const std::uint64_t base = base_of(request);
     const NetQuality quality = net_t_value(points, base);
@@ -82,10 +60,10 @@ MeasureInfo min_distance_measure() {
   info.description =
       "smallest distance between two points (Euclidean, or toroidal with toroidal=1), by a neighbour grid for d <= 8; "
       "extras first, second (a closest pair's rows)";
-  info.params = {{"toroidal", "1: distances on the unit torus (axis differences wrapped to [-1/2, 1/2])", "0"}};
-  info.validate = [](const PointView&, const MeasureRequest& request) { toroidal_of(request, "0"); };
+  info.params = {params::flag("toroidal", "1: distances on the unit torus (axis differences wrapped to [-1/2, 1/2])",
+                              "0")};
   info.compute = [](const PointView& points, const MeasureRequest& request) {
-    const MinimumDistance closest = minimum_distance(points, toroidal_of(request, "0"));
+    const MinimumDistance closest = minimum_distance(points, toroidal_of(request));
     MeasureResult result;
     result.value = closest.distance;
     result.extras["first"] = static_cast<double>(closest.first);
@@ -104,10 +82,9 @@ MeasureInfo poisson_radius_measure() {
       "min_distance, packing_distance";
   info.min_dim = 1;
   info.max_dim = 8;
-  info.params = {{"toroidal", "1: distances on the unit torus (Lagae & Dutre 2008), 0: Euclidean", "1"}};
-  info.validate = [](const PointView&, const MeasureRequest& request) { toroidal_of(request, "1"); };
+  info.params = {params::flag("toroidal", "1: distances on the unit torus (Lagae & Dutre 2008), 0: Euclidean", "1")};
   info.compute = [](const PointView& points, const MeasureRequest& request) {
-    const double distance = minimum_distance(points, toroidal_of(request, "1")).distance;
+    const double distance = minimum_distance(points, toroidal_of(request)).distance;
     const double packing = densest_packing_distance(points.n, points.d);
     MeasureResult result;
     result.value = distance / packing;

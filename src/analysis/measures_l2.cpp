@@ -15,12 +15,10 @@ namespace stratum::analysis::measure_families {
 namespace {
 
 L2Algorithm algorithm_of(const MeasureRequest& request) {
-  const auto it = request.params.find("algorithm");
-  const std::string text = it == request.params.end() ? "auto" : it->second;
-  if (text == "auto") return L2Algorithm::automatic;
+  const std::string& text = request.values.text("algorithm");
   if (text == "warnock") return L2Algorithm::pairwise;
   if (text == "fast") return L2Algorithm::fast;
-  throw invalid_argument("algorithm", text.empty() ? "''" : text, "allowed: auto, warnock, fast");
+  return L2Algorithm::automatic;
 }
 
 MeasureResult l2_result(L2Kind kind, const PointView& points, const MeasureRequest& request) {
@@ -54,7 +52,8 @@ std::vector<MeasureInfo> l2() {
       "1972), O(N log N) for d = 2 and O(N log^2 N) for d = 3 (Heinrich 1996); value = D, extras squared = D^2 (scipy's "
       "'L2-star' returns D)",
       L2Kind::star);
-  star.params = {{"algorithm", "auto (fast for d <= 3), warnock (O(d N^2)) or fast (d <= 3)", "auto"}};
+  star.params = {params::choice("algorithm", "auto (fast for d <= 3), warnock (O(d N^2)) or fast (d <= 3)", "auto",
+                                {"auto", "warnock", "fast"})};
   star.validate = [](const PointView& points, const MeasureRequest& request) {
     if (algorithm_of(request) == L2Algorithm::fast && points.d > 3)
       throw invalid_argument("algorithm", "fast",

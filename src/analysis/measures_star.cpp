@@ -15,17 +15,7 @@ namespace {
 
 constexpr const char* kDefaultMaxBoxes = "1000000";
 
-std::string param_or(const MeasureRequest& request, const std::string& name, const std::string& fallback) {
-  const auto it = request.params.find(name);
-  return it == request.params.end() ? fallback : it->second;
-}
-
-std::string method_of(const MeasureRequest& request) {
-  const std::string method = param_or(request, "method", "auto");
-  if (method != "auto" && method != "exact" && method != "bounds")
-    throw invalid_argument("method", method.empty() ? "''" : method, "allowed: auto, exact, bounds");
-  return method;
-}
+const std::string& method_of(const MeasureRequest& request) { return request.values.text("method"); }
 
 /// The default δ: 0.05 up to d = 3, doubled every two dimensions above (the
 /// partition's size grows roughly like δ^-d), at most 0.4.
@@ -35,33 +25,10 @@ double default_delta(std::size_t d) {
 }
 
 double delta_of(const MeasureRequest& request, std::size_t d) {
-  if (request.params.count("delta") == 0) return default_delta(d);
-  const std::string text = request.params.at("delta");
-  std::size_t used = 0;
-  double delta = 0;
-  try {
-    delta = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(delta) || delta <= 0 || delta >= 1)
-    throw invalid_argument("delta", text.empty() ? "''" : text, "must be a number in (0, 1)");
-  return delta;
+  return request.values.has("delta") ? request.values.real("delta") : default_delta(d);
 }
 
-std::uint64_t max_boxes_of(const MeasureRequest& request) {
-  const std::string text = param_or(request, "max_boxes", kDefaultMaxBoxes);
-  std::size_t used = 0;
-  unsigned long long boxes = 0;
-  try {
-    if (!text.empty() && text[0] != '-') boxes = std::stoull(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || boxes == 0)
-    throw invalid_argument("max_boxes", text.empty() ? "''" : text, "must be a positive integer");
-  return boxes;
-}
+std::uint64_t max_boxes_of(const MeasureRequest& request) { return request.values.unsigned_integer("max_boxes"); }
 
 bool use_exact(const PointView& points, const std::string& method) {
   return method == "exact" || (method == "auto" && star_exact_feasible(points.n, points.d));
@@ -79,17 +46,17 @@ std::vector<MeasureInfo> star() {
   info.min_dim = 1;
   info.max_dim = 0;
   info.params = {
-      {"method", "auto (exact where feasible, else bounds), exact, or bounds", "auto"},
-      {"delta",
-       "bounds: width of the delta-partition, upper - lower <= delta, in (0, 1); default 0.05 for d <= 3, 0.1 for "
-       "d = 4, 5, 0.2 for d = 6, 7, 0.4 above, doubled until the partition fits in max_boxes",
-       ""},
-      {"max_boxes", "bounds: the most boxes the delta-partition may use", kDefaultMaxBoxes},
+      params::choice("method", "auto (exact where feasible, else bounds), exact, or bounds", "auto",
+                     {"auto", "exact", "bounds"}),
+      params::real("delta",
+                   "bounds: width of the delta-partition, upper - lower <= delta; default 0.05 for d <= 3, 0.1 for "
+                   "d = 4, 5, 0.2 for d = 6, 7, 0.4 above, doubled until the partition fits in max_boxes",
+                   "", open(0, 1)),
+      params::integer("max_boxes", "bounds: the most boxes the delta-partition may use", kDefaultMaxBoxes,
+                      at_least(1)),
   };
   info.validate = [](const PointView& points, const MeasureRequest& request) {
-    const std::string method = method_of(request);
-    delta_of(request, points.d);
-    max_boxes_of(request);
+    const std::string& method = method_of(request);
     if (method == "exact" && !star_exact_feasible(points.n, points.d))
       star_discrepancy_exact(points, request.threads);  // throws the message naming d (or n) and method=bounds
   };
@@ -103,7 +70,7 @@ std::vector<MeasureInfo> star() {
     // Without an explicit delta, start at the default and double it until the
     // partition fits in max_boxes (an attempt that overflows stops early).
     double delta = delta_of(request, points.d);
-    const bool adapt = request.params.count("delta") == 0;
+    const bool adapt = !request.values.has("delta");
     StarDiscrepancyBounds bounds;
     for (;;) {
       try {

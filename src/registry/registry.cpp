@@ -83,18 +83,10 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   const std::string randomize = request.randomize.empty() ? sampler.randomizers.front() : request.randomize;
   if (std::find(sampler.randomizers.begin(), sampler.randomizers.end(), randomize) == sampler.randomizers.end())
     throw invalid_argument("randomize", randomize, sampler.name + " accepts " + join(sampler.randomizers));
-  for (const auto& [key, value] : request.params) {
-    const bool known = std::any_of(sampler.params.begin(), sampler.params.end(),
-                                   [&](const ParamSpec& spec) { return spec.name == key; });
-    if (!known) {
-      std::vector<std::string> names;
-      for (const auto& spec : sampler.params) names.push_back(spec.name);
-      throw invalid_argument("param", key + "=" + value,
-                             sampler.name + (names.empty() ? " takes no parameters" : " takes " + join(names)));
-    }
-  }
-  if (sampler.validate) sampler.validate(request);
-  if (const auto count = sampler.count(request)) {
+  SamplerRequest bound = request;
+  bound.values = bind_params(sampler.name, sampler.params, request.params);
+  if (sampler.validate) sampler.validate(bound);
+  if (const auto count = sampler.count(bound)) {
     const std::uint64_t limit = max_coordinates();
     require(*count <= limit / request.d, "n", *count,
             "n x d = " + std::to_string(*count) + " x " + std::to_string(request.d) +
@@ -106,9 +98,8 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
 PointSet generate_points(std::string_view name, const SamplerRequest& request) {
   const SamplerInfo& sampler = find_sampler(name);
   SamplerRequest resolved = request;
-  for (const auto& spec : sampler.params)
-    if (!spec.default_value.empty() && !resolved.params.count(spec.name)) resolved.params[spec.name] = spec.default_value;
   resolved.randomize = validate_request(sampler, resolved);
+  resolved.values = bind_params(sampler.name, sampler.params, request.params);
   return sampler.generate(resolved);
 }
 

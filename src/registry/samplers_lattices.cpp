@@ -4,7 +4,6 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
-#include <charconv>
 #include <cmath>
 
 #include "families.hpp"
@@ -25,47 +24,15 @@ namespace {
 /// Korobov search limit: n x d point-coordinates per candidate.
 constexpr std::uint64_t search_limit = std::uint64_t{1} << 26;
 
-/// `text` as a real number, or nullopt when it is not exactly one.
-std::optional<double> parse_real(const std::string& text) {
-  double value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end || text.empty()) return std::nullopt;
-  return value;
-}
-
-double param_gamma(const SamplerRequest& request) {
-  const auto text = param_text(request, "gamma");
-  if (!text) return 1.0;
-  const auto value = parse_real(*text);
-  if (!value || !(*value > 0 && *value <= 1))
-    throw invalid_argument("gamma", text->empty() ? "''" : *text, "must be a number in (0, 1]");
-  return *value;
-}
+double param_gamma(const SamplerRequest& request) { return request.values.real("gamma"); }
 
 /// Kronecker's offset s (default 0) and α (d reals; absent: R_d), checked by
 /// the header's constructor except for the count and the syntax.
 Kronecker kronecker_from(const SamplerRequest& request) {
-  double offset = 0;
-  if (const auto text = param_text(request, "offset")) {
-    const auto value = parse_real(*text);
-    if (!value) throw invalid_argument("offset", text->empty() ? "''" : *text, "must be a number in [0, 1)");
-    offset = *value;
-  }
-  const auto text = param_text(request, "alpha");
-  if (!text) return Kronecker(request.d, offset);
-  std::vector<double> alpha;
-  std::size_t begin = 0;
-  for (;;) {
-    const std::size_t comma = text->find(',', begin);
-    const std::string item = text->substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
-    const auto value = parse_real(item);
-    if (!value) throw invalid_argument("alpha", *text, "must be d comma-separated numbers in (0, 1); '" + item + "' is not a number");
-    alpha.push_back(*value);
-    if (comma == std::string::npos) break;
-    begin = comma + 1;
-  }
-  require(alpha.size() == request.d, "alpha", *text,
+  const double offset = request.values.real("offset");
+  if (!request.values.has("alpha")) return Kronecker(request.d, offset);
+  const std::vector<double>& alpha = request.values.reals("alpha");
+  require(alpha.size() == request.d, "alpha", *param_text(request, "alpha"),
           "has " + std::to_string(alpha.size()) + " entries; d = " + std::to_string(request.d) + " needs " +
               std::to_string(request.d));
   return Kronecker(alpha, offset);
@@ -74,23 +41,16 @@ Kronecker kronecker_from(const SamplerRequest& request) {
 /// The lattice sequence's generating vector: generator= (d positive
 /// integers) or the default vector's first d components (d <= 32).
 LatticeSequence lattice_sequence_from(const SamplerRequest& request) {
-  const auto generator = param_int_list(request, "generator");
-  if (!generator) {
+  if (!request.values.has("generator")) {
     require(request.d <= LatticeSequence::default_generator.size(), "d", request.d,
             "the default generating vector has 32 components; give generator= (d integers) for more dimensions");
     return LatticeSequence(request.d);
   }
-  const std::string text = *param_text(request, "generator");
-  require(generator->size() == request.d, "generator", text,
-          "has " + std::to_string(generator->size()) + " entries; d = " + std::to_string(request.d) + " needs " +
+  const std::vector<std::int64_t>& generator = request.values.integers("generator");
+  require(generator.size() == request.d, "generator", *param_text(request, "generator"),
+          "has " + std::to_string(generator.size()) + " entries; d = " + std::to_string(request.d) + " needs " +
               std::to_string(request.d));
-  std::vector<std::uint64_t> g;
-  for (std::size_t j = 0; j < generator->size(); ++j) {
-    require((*generator)[j] >= 1, "generator", "entry " + std::to_string(j) + " = " + std::to_string((*generator)[j]),
-            "entries must be positive integers");
-    g.push_back(static_cast<std::uint64_t>((*generator)[j]));
-  }
-  return LatticeSequence(g);
+  return LatticeSequence(std::vector<std::uint64_t>(generator.begin(), generator.end()));
 }
 
 /// An index-addressable sequence from `start`, rotated under cp.
@@ -109,18 +69,19 @@ PointSet fill_sequence(const Sequence& sequence, const SamplerRequest& request) 
 /// search (no generator=, no a=). Throws invalid_argument naming the param.
 std::optional<std::array<std::uint64_t, Rank1Lattice::max_dimensions>> explicit_generator(
     const SamplerRequest& request) {
-  const auto generator = param_int_list(request, "generator");
-  const auto a = param_int(request, "a");
+  const bool generator = request.values.has("generator");
+  const bool a = request.values.has("a");
   const std::uint64_t n = *request.n;
   if (generator && a)
     throw invalid_argument("generator", *param_text(request, "generator"), "give generator= or a=, not both");
   if (generator) {
-    require(generator->size() == request.d, "generator", *param_text(request, "generator"),
-            "has " + std::to_string(generator->size()) + " entries; d = " + std::to_string(request.d) + " needs " +
+    const std::vector<std::int64_t>& entries = request.values.integers("generator");
+    require(entries.size() == request.d, "generator", *param_text(request, "generator"),
+            "has " + std::to_string(entries.size()) + " entries; d = " + std::to_string(request.d) + " needs " +
                 std::to_string(request.d));
     std::array<std::uint64_t, Rank1Lattice::max_dimensions> z{};
-    for (std::size_t j = 0; j < generator->size(); ++j) {
-      const std::int64_t value = (*generator)[j];
+    for (std::size_t j = 0; j < entries.size(); ++j) {
+      const std::int64_t value = entries[j];
       require(value >= 1 && static_cast<std::uint64_t>(value) < std::max<std::uint64_t>(n, 2), "generator",
               "entry " + std::to_string(j) + " = " + std::to_string(value),
               "entries must be in [1, n) = [1, " + std::to_string(n) + ")");
@@ -128,10 +89,7 @@ std::optional<std::array<std::uint64_t, Rank1Lattice::max_dimensions>> explicit_
     }
     return z;
   }
-  if (a) {
-    require(*a >= 1, "a", *a, "the Korobov parameter must be in [1, n) = [1, " + std::to_string(n) + ") and coprime to n");
-    return korobov_generator(n, static_cast<std::uint64_t>(*a), request.d);
-  }
+  if (a) return korobov_generator(n, static_cast<std::uint64_t>(request.values.integer("a")), request.d);
   return std::nullopt;
 }
 
@@ -191,10 +149,10 @@ std::vector<SamplerInfo> lattices() {
       .randomizers = {"none", "cp"},
       .counts = "any n >= 1: the classic Fibonacci lattice for n = 1, 2, 3, 5, 8, 13, ..., 987, 1597, ...; "
                 "strict=1 accepts only those",
-      .params = {{"strict", "1: accept only Fibonacci numbers n (the classic construction)", "0"}},
+      .params = {params::flag("strict", "1: accept only Fibonacci numbers n (the classic construction)", "0")},
       .validate =
           [](const SamplerRequest& request) {
-            if (param_bool(request, "strict", false))
+            if (request.values.flag("strict"))
               require(fibonacci_index(*request.n) != 0, "n", *request.n,
                       "with strict=1 n must be a Fibonacci number (1, 2, 3, 5, 8, 13, 21, ...; nearest: " +
                           nearby_fibonacci(*request.n) + ")");
@@ -214,9 +172,12 @@ std::vector<SamplerInfo> lattices() {
       .properties = {"rank-1 lattice", "Latin in every coordinate with gcd(z_j, n) = 1 (always for a= and the search)"},
       .randomizers = {"none", "cp"},
       .counts = "any n >= 1; the Korobov search (no generator=, no a=) takes n x d <= 2^26",
-      .params = {{"generator", "generating vector z: d comma-separated integers in [1, n)", ""},
-                 {"a", "Korobov parameter in [1, n), coprime to n: z = (1, a, a^2, ...) mod n", ""},
-                 {"gamma", "product-weight decay of the search criterion, gamma_j = gamma^j, in (0, 1]", "1"}},
+      .params = {params::integers("generator", "generating vector z: d integers in [1, n)", "", at_least(1),
+                                  {1, Rank1Lattice::max_dimensions}),
+                 params::integer("a", "Korobov parameter in [1, n), coprime to n: z = (1, a, a^2, ...) mod n", "",
+                                 at_least(1)),
+                 params::real("gamma", "product-weight decay of the search criterion, gamma_j = gamma^j", "1",
+                              left_open(0, 1))},
       .validate =
           [](const SamplerRequest& request) {
             param_gamma(request);
@@ -246,8 +207,9 @@ std::vector<SamplerInfo> lattices() {
       .properties = {"index-addressable", "progressive", "low-discrepancy", "three gap lengths per coordinate"},
       .randomizers = {"none", "cp"},
       .counts = "any n >= 1",
-      .params = {{"alpha", "d comma-separated reals in (0, 1), one per dimension (default: R_d of Roberts 2018)", ""},
-                 {"offset", "the offset s in [0, 1) added in every dimension", "0"}},
+      .params = {params::reals("alpha", "d reals, one per dimension (default: R_d of Roberts 2018)", "", open(0, 1),
+                               {1, Kronecker::max_dimensions}),
+                 params::real("offset", "the offset s added in every dimension", "0", half_open(0, 1))},
       .validate = [](const SamplerRequest& request) { kronecker_from(request); },
       .count = requested_count,
       .generate = [](const SamplerRequest& request) { return fill_sequence(kronecker_from(request), request); },
@@ -265,8 +227,8 @@ std::vector<SamplerInfo> lattices() {
                      "Latin at n = 2^m in every coordinate with odd g_j (all of the default)"},
       .randomizers = {"none", "cp"},
       .counts = "any n >= 1; lattices at n = 2^m (the default vector is built for 2^10 <= n <= 2^20)",
-      .params = {{"generator", "generating vector g: d comma-separated positive integers (default: CKN 2006, d <= 32)",
-                  ""}},
+      .params = {params::integers("generator", "generating vector g: d integers (default: CKN 2006, d <= 32)", "",
+                                  at_least(1), {1, LatticeSequence::max_dimensions})},
       .validate = [](const SamplerRequest& request) { lattice_sequence_from(request); },
       .count = requested_count,
       .generate = [](const SamplerRequest& request) { return fill_sequence(lattice_sequence_from(request), request); },

@@ -21,32 +21,17 @@ namespace stratum::registry_families {
 using namespace registry_support;
 
 
-/// "4x8" (or "4,8") → {4, 8}; every part a positive integer.
-static std::vector<std::uint64_t> parse_strata(const std::string& text) {
-  std::vector<std::uint64_t> parts;
-  std::string item;
-  auto flush = [&] {
-    char* end = nullptr;
-    const unsigned long long value = item.empty() ? 0 : std::strtoull(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || item[0] == '-' || value == 0)
-      throw invalid_argument("strata", text.empty() ? "''" : text,
-                             "must be positive integers separated by x, e.g. strata=4x8");
-    parts.push_back(value);
-    item.clear();
-  };
-  for (char ch : text) {
-    if (ch == 'x' || ch == 'X' || ch == ',') flush();
-    else item += ch;
-  }
-  flush();
-  return parts;
+/// strata= as counts per dimension ("4x8" → {4, 8}).
+static std::vector<std::uint64_t> strata_param(const SamplerRequest& request) {
+  const auto& parts = request.values.integers("strata");
+  return {parts.begin(), parts.end()};
 }
 
 /// The strata of a grid or jittered request: strata= if given, else k^d = n.
 static StrataShape strata_of(const SamplerRequest& request) {
   const std::uint64_t n = *request.n;
-  if (const auto text = param_text(request, "strata"); text && !text->empty()) {
-    auto parts = parse_strata(*text);
+  if (const auto text = param_text(request, "strata")) {
+    auto parts = strata_param(request);
     require(parts.size() == request.d, "strata", *text,
             "needs one count per dimension (d = " + std::to_string(request.d) + ")");
     StrataShape shape(std::move(parts));
@@ -72,16 +57,11 @@ static std::uint64_t latin_square_order(const SamplerRequest& request) {
 
 static LatinSquare latin_square_of(const SamplerRequest& request) {
   const std::uint64_t m = latin_square_order(request);
-  const std::string method = param_text(request, "method").value_or("jacobson-matthews");
-  LatinSquare::Method kind;
-  if (method == "jacobson-matthews") kind = LatinSquare::Method::jacobson_matthews;
-  else if (method == "permuted-cyclic") kind = LatinSquare::Method::permuted_cyclic;
-  else throw invalid_argument("method", method, "must be jacobson-matthews or permuted-cyclic");
-  std::uint64_t steps = LatinSquare::default_steps(m);
-  if (const auto given = param_int(request, "steps")) {
-    require(*given >= 0, "steps", *given, "must be a non-negative integer");
-    steps = static_cast<std::uint64_t>(*given);
-  }
+  const LatinSquare::Method kind = request.values.text("method") == "permuted-cyclic"
+                                       ? LatinSquare::Method::permuted_cyclic
+                                       : LatinSquare::Method::jacobson_matthews;
+  const std::uint64_t steps = request.values.has("steps") ? static_cast<std::uint64_t>(request.values.integer("steps"))
+                                                          : LatinSquare::default_steps(m);
   // Each move from a proper square costs about m moves with its improper
   // excursion: bound the total near 2^28 moves (seconds).
   constexpr std::uint64_t max_moves = std::uint64_t{1} << 28;
@@ -93,19 +73,12 @@ static LatinSquare latin_square_of(const SamplerRequest& request) {
   return LatinSquare(m, request.seed, kind, steps);
 }
 
-static double aspect_of(const SamplerRequest& request) {
-  const auto text = param_text(request, "aspect");
-  if (!text || text->empty()) return 1.0;
-  char* end = nullptr;
-  const double value = std::strtod(text->c_str(), &end);
-  if (*end != '\0') throw invalid_argument("aspect", *text, "must be a positive number (columns / rows)");
-  return value;
-}
+static double aspect_of(const SamplerRequest& request) { return request.values.real("aspect"); }
 
 static MultiJittered multi_jittered_of(const SamplerRequest& request) {
   const std::uint64_t n = *request.n;
-  if (const auto text = param_text(request, "strata"); text && !text->empty()) {
-    const auto parts = parse_strata(*text);
+  if (const auto text = param_text(request, "strata")) {
+    const auto parts = strata_param(request);
     require(parts.size() == 2, "strata", *text, "multi-jittered needs columns x rows, e.g. strata=4x8");
     require(n % parts[0] == 0 && n / parts[0] == parts[1], "n", n,
             "must equal the product of strata=" + *text);
@@ -115,10 +88,7 @@ static MultiJittered multi_jittered_of(const SamplerRequest& request) {
 }
 
 static NQueens::Method n_queens_method(const SamplerRequest& request) {
-  const std::string method = param_text(request, "method").value_or("random");
-  if (method == "random") return NQueens::Method::random;
-  if (method == "formula") return NQueens::Method::formula;
-  throw invalid_argument("method", method, "must be random or formula");
+  return request.values.text("method") == "formula" ? NQueens::Method::formula : NQueens::Method::random;
 }
 
 /// Applies the request's randomizer ("none" or "cp") to an index-addressable pattern.
@@ -134,7 +104,7 @@ static PointSet fill_with_randomizer(const SamplerRequest& request, const Patter
 }
 
 static PointSet generate_latin_hypercube(const SamplerRequest& request) {
-  const LatinHypercube lhs(*request.n, request.d, request.seed, param_bool(request, "centered", false));
+  const LatinHypercube lhs(*request.n, request.d, request.seed, request.values.flag("centered"));
   PointSet points = allocate_points(*request.n, request.d);
   std::vector<std::uint64_t> cells(*request.n);
   double* out = points.data.get();
@@ -157,8 +127,8 @@ static SamplerInfo latin_hypercube_entry(std::string name, std::string descripti
       .properties = {"Latin (one point per 1/n interval in every coordinate)", "unbiased"},
       .randomizers = {"none"},
       .counts = "any n >= 1",
-      .params = {{"centered", "1: points at the interval centres (scipy's scramble=False)", "0"}},
-      .validate = [](const SamplerRequest& request) { param_bool(request, "centered", false); },
+      .params = {params::flag("centered", "1: points at the interval centres (scipy's scramble=False)", "0")},
+      .validate = nullptr,
       .count = requested_count,
       .generate = generate_latin_hypercube,
   };
@@ -189,7 +159,8 @@ std::vector<SamplerInfo> patterns() {
           },
   });
 
-  const ParamSpec strata_param{"strata", "strata per dimension, e.g. 4x8 (product must equal n)", ""};
+  const Param strata_schema = params::integers("strata", "strata per dimension, e.g. 4x8 (product must equal n)", "",
+                                               at_least(1), {}, 'x');
   const std::string strata_counts = "n = k^d (a perfect d-th power), or any n with strata=n1x...xnd of product n";
 
   list.push_back({
@@ -201,7 +172,7 @@ std::vector<SamplerInfo> patterns() {
       .properties = {"stratified (one point per cell)", "deterministic", "index-addressable"},
       .randomizers = {"none", "cp"},
       .counts = strata_counts,
-      .params = {strata_param},
+      .params = {strata_schema},
       .validate = [](const SamplerRequest& request) { strata_of(request); },
       .count = requested_count,
       .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, Grid(strata_of(request))); },
@@ -216,7 +187,7 @@ std::vector<SamplerInfo> patterns() {
       .properties = {"stratified (one point per cell)", "unbiased", "index-addressable"},
       .randomizers = {"none"},
       .counts = strata_counts,
-      .params = {strata_param},
+      .params = {strata_schema},
       .validate = [](const SamplerRequest& request) { strata_of(request); },
       .count = requested_count,
       .generate =
@@ -240,7 +211,8 @@ std::vector<SamplerInfo> patterns() {
       .properties = {"Latin in x and y", "one point per m x k stratum", "unbiased"},
       .randomizers = {"none"},
       .counts = "any n >= 1 (m x k with m <= k closest to sqrt(n); m = 1 for prime n), or strata=mxk of product n",
-      .params = {{"strata", "columns x rows, e.g. 4x8 (product must equal n); default: closest to square", ""}},
+      .params = {params::integers("strata", "columns x rows, e.g. 4x8 (product must equal n); default: closest to "
+                                  "square", "", at_least(1), {2, 2}, 'x')},
       .validate = [](const SamplerRequest& request) { multi_jittered_of(request); },
       .count = requested_count,
       .generate =
@@ -270,7 +242,7 @@ std::vector<SamplerInfo> patterns() {
                      "unbiased", "index-addressable"},
       .randomizers = {"none"},
       .counts = "any n in [1, 2^32 - 1]; fully stratified when n = m * ceil(n/m), e.g. squares and m(m+1)",
-      .params = {{"aspect", "columns / rows of the strata (Kensler's a)", "1"}},
+      .params = {params::real("aspect", "columns / rows of the strata (Kensler's a)", "1", above(0))},
       .validate = [](const SamplerRequest& request) { CorrelatedMultiJittered(*request.n, 0, aspect_of(request)); },
       .count = requested_count,
       .generate =
@@ -295,8 +267,9 @@ std::vector<SamplerInfo> patterns() {
                      "unbiased with cp, the default (none: only method=formula with gcd(n,6)=1)"},
       .randomizers = {"cp", "none"},
       .counts = "n = 1 or n >= 4 (no n-queens solution exists for n = 2, 3); method=random: n <= 2^24",
-      .params = {{"method", "random (local search, well spread) or formula (explicit solutions on a few lines)",
-                  "random"}},
+      .params = {params::choice("method",
+                                "random (local search, well spread) or formula (explicit solutions on a few lines)",
+                                "random", {"random", "formula"})},
       .validate = [](const SamplerRequest& request) { NQueens::check(*request.n, n_queens_method(request)); },
       .count = requested_count,
       .generate =
@@ -317,9 +290,10 @@ std::vector<SamplerInfo> patterns() {
                      "Latin square (each symbol once per row and column)", "unbiased"},
       .randomizers = {"none"},
       .counts = "n = m^2 (m <= 65535; jacobson-matthews by default needs m^3 <= 2^28, i.e. m <= 645; steps= can lower it)",
-      .params = {{"method", "jacobson-matthews (uniform, MCMC) or permuted-cyclic (isotopes of Z_m, fast)",
-                  "jacobson-matthews"},
-                 {"steps", "Jacobson-Matthews moves from proper squares (default m^2, about m^3 moves in all)", ""}},
+      .params = {params::choice("method", "jacobson-matthews (uniform, MCMC) or permuted-cyclic (isotopes of Z_m, fast)",
+                                "jacobson-matthews", {"jacobson-matthews", "permuted-cyclic"}),
+                 params::integer("steps", "Jacobson-Matthews moves from proper squares (default m^2, about m^3 moves "
+                                 "in all)", "", at_least(0))},
       .validate = [](const SamplerRequest& request) { latin_square_of(request); },
       .count = requested_count,
       .generate =

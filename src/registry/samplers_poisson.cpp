@@ -17,11 +17,8 @@ using namespace registry_support;
 namespace {
 
 
-unsigned candidates_param(const SamplerRequest& request, unsigned fallback, unsigned limit) {
-  const std::int64_t value = param_int(request, "candidates").value_or(fallback);
-  require(value >= 1 && value <= static_cast<std::int64_t>(limit), "candidates", value,
-          "must be an integer in [1, " + std::to_string(limit) + "]");
-  return static_cast<unsigned>(value);
+unsigned candidates_param(const SamplerRequest& request) {
+  return static_cast<unsigned>(request.values.integer("candidates"));
 }
 
 PointSet to_point_set(const std::vector<double>& coordinates, unsigned d) {
@@ -44,8 +41,7 @@ void require_fits(const SamplerRequest& request, double radius, bool periodic, c
 }
 
 void validate_poisson(const SamplerRequest& request) {
-  candidates_param(request, PoissonDisk::default_candidates, PoissonDisk::max_candidates);
-  const bool periodic = param_bool(request, "periodic", false);
+  const bool periodic = request.values.flag("periodic");
   if (request.radius) {
     require_fits(request, *request.radius, periodic, "radius");
     if (request.n) {
@@ -63,8 +59,8 @@ void validate_poisson(const SamplerRequest& request) {
 }
 
 PointSet generate_poisson(const SamplerRequest& request) {
-  const unsigned candidates = candidates_param(request, PoissonDisk::default_candidates, PoissonDisk::max_candidates);
-  const bool periodic = param_bool(request, "periodic", false);
+  const unsigned candidates = candidates_param(request);
+  const bool periodic = request.values.flag("periodic");
   if (!request.radius)
     return to_point_set(PoissonDisk::with_count(*request.n, request.d, request.seed, candidates, periodic), request.d);
   const PoissonDisk disk(request.d, *request.radius, request.seed, candidates, periodic);
@@ -77,8 +73,7 @@ PointSet generate_poisson(const SamplerRequest& request) {
 int best_candidate_budget_log2(unsigned d) { return d <= 2 ? 27 : d == 3 ? 25 : 23; }
 
 void validate_best_candidate(const SamplerRequest& request) {
-  const unsigned k = candidates_param(request, BestCandidate::default_candidates, BestCandidate::max_candidates);
-  param_bool(request, "periodic", true);
+  const unsigned k = candidates_param(request);
   const std::uint64_t total = BestCandidate::candidate_count(*request.n, k);
   const int log2 = best_candidate_budget_log2(request.d);
   const std::uint64_t budget = std::uint64_t{1} << log2;
@@ -110,8 +105,10 @@ std::vector<SamplerInfo> poisson() {
                 "(radius chosen from n); n and radius: exactly n points at distance >= radius, if the maximal set "
                 "has that many",
       .n_optional = true,
-      .params = {{"candidates", "Bridson's k: candidates tried around an active point before it retires", "30"},
-                 {"periodic", "1: toroidal distances (the pattern tiles space)", "0"}},
+      .params = {params::integer("candidates", "Bridson's k: candidates tried around an active point before it retires",
+                                 std::to_string(PoissonDisk::default_candidates),
+                                 closed(1, PoissonDisk::max_candidates)),
+                 params::flag("periodic", "1: toroidal distances (the pattern tiles space)", "0")},
       .validate = validate_poisson,
       .count = requested_count,
       .generate = generate_poisson,
@@ -127,15 +124,18 @@ std::vector<SamplerInfo> poisson() {
       .randomizers = {"none"},
       .counts = "any n >= 1 with candidates*n*(n-1)/2 <= 2^27 (d <= 2), 2^25 (d = 3), 2^23 (d = 4): "
                 "n <= 5181, 2591, 1295 for candidates=10",
-      .params = {{"candidates", "Mitchell's multiplier k: point i is the best of k*i candidates", "10"},
-                 {"periodic", "1: toroidal distances, as Mitchell (the pattern tiles the plane); 0: Euclidean", "1"}},
+      .params = {params::integer("candidates", "Mitchell's multiplier k: point i is the best of k*i candidates",
+                                 std::to_string(BestCandidate::default_candidates),
+                                 closed(1, BestCandidate::max_candidates)),
+                 params::flag("periodic", "1: toroidal distances, as Mitchell (the pattern tiles the plane); 0: "
+                              "Euclidean", "1")},
       .validate = validate_best_candidate,
       .count = requested_count,
       .generate =
           [](const SamplerRequest& request) {
             const unsigned k =
-                candidates_param(request, BestCandidate::default_candidates, BestCandidate::max_candidates);
-            const BestCandidate pattern(request.d, request.seed, k, param_bool(request, "periodic", true));
+                candidates_param(request);
+            const BestCandidate pattern(request.d, request.seed, k, request.values.flag("periodic"));
             PointSet points = allocate_points(*request.n, request.d);
             pattern.generate(*request.n, points.data.get());
             return points;

@@ -36,11 +36,7 @@ using namespace registry_support;
 namespace {
 
 Sobol::Order parse_order(const SamplerRequest& request) {
-  const auto text = param_text(request, "order");
-  if (!text || *text == "gray") return Sobol::Order::gray;
-  if (*text == "natural") return Sobol::Order::natural;
-  throw invalid_argument("order", text->empty() ? "''" : *text,
-                         "must be gray (Boost and scipy order) or natural (pbrt-v4 order)");
+  return request.values.text("order") == "natural" ? Sobol::Order::natural : Sobol::Order::gray;
 }
 
 /// The generator matrices of the first d Sobol' dimensions in the walk's
@@ -370,10 +366,9 @@ PointSet generate_sobol(const SamplerRequest& request) {
   throw invalid_argument("randomize", randomize, "unknown to the Sobol generator");
 }
 
-const ParamSpec order_param{
-    "order", "point order: gray (Gray code, as Boost.Random and scipy) or natural (index bits, as pbrt-v4)", "gray"};
-
-void validate_order(const SamplerRequest& request) { parse_order(request); }
+const Param order_param = params::choice(
+    "order", "point order: gray (Gray code, as Boost.Random and scipy) or natural (index bits, as pbrt-v4)", "gray",
+    {"gray", "natural"});
 
 /// zsobol's image (resolution) and pixel from the request; the points are
 /// the pixel's n = spp samples.
@@ -382,11 +377,8 @@ struct ZSobolPixel {
   std::uint32_t x = 0, y = 0;
 };
 ZSobolPixel zsobol_from(const SamplerRequest& request) {
-  const std::int64_t resolution = param_int(request, "resolution").value_or(1);
-  require(resolution >= 1 && resolution <= ZSobol::max_resolution, "resolution", resolution,
-          "must be in [1, 16384] (the image's larger side in pixels)");
-  std::vector<std::int64_t> pixel = param_int_list(request, "pixel").value_or(std::vector<std::int64_t>{0, 0});
-  require(pixel.size() == 2, "pixel", param_text(request, "pixel").value_or(""), "must be two integers x,y");
+  const std::int64_t resolution = request.values.integer("resolution");
+  const std::vector<std::int64_t>& pixel = request.values.integers("pixel");
   for (std::int64_t c : pixel)
     require(c >= 0 && c < resolution, "pixel", std::to_string(pixel[0]) + "," + std::to_string(pixel[1]),
             "must lie in the image: coordinates in [0, resolution = " + std::to_string(resolution) + ")");
@@ -421,7 +413,7 @@ std::vector<SamplerInfo> sobol() {
       .randomizers = {"owen-hash", "none", "owen", "xor", "lms", "cp"},
       .counts = "any n >= 1 (powers of two give (t,m,s)-nets)",
       .params = {order_param},
-      .validate = validate_order,
+      .validate = nullptr,
       .count = requested_count,
       .generate = generate_sobol,
   });
@@ -438,8 +430,9 @@ std::vector<SamplerInfo> sobol() {
                      "blue-noise error across pixels"},
       .randomizers = {"owen-hash"},
       .counts = "n = spp, a power of 2 up to 2^24",
-      .params = {{"pixel", "the pixel x,y whose samples these are", "0,0"},
-                 {"resolution", "the image's larger side in pixels (sets the Morton levels)", "1"}},
+      .params = {params::integers("pixel", "the pixel x,y whose samples these are", "0,0", at_least(0), {2, 2}),
+                 params::integer("resolution", "the image's larger side in pixels (sets the Morton levels)", "1",
+                                 closed(1, ZSobol::max_resolution))},
       .validate = [](const SamplerRequest& request) { zsobol_from(request); },
       .count = requested_count,
       .generate = generate_zsobol,
@@ -456,7 +449,7 @@ std::vector<SamplerInfo> sobol() {
       .randomizers = {"owen-hash", "none", "owen", "xor", "lms"},
       .counts = "any n >= 1 (powers of two give (0,m,2)-nets)",
       .params = {order_param},
-      .validate = validate_order,
+      .validate = nullptr,
       .count = requested_count,
       .generate = generate_sobol,
   });

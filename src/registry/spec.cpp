@@ -274,6 +274,17 @@ std::pair<std::string, std::string> parse_key_value(std::string_view option, std
   return {std::string(item.substr(0, equals)), std::string(item.substr(equals + 1))};
 }
 
+std::map<std::string, std::string> parse_key_values(std::string_view option, const std::vector<std::string>& items) {
+  std::map<std::string, std::string> values;
+  for (const auto& item : items) {
+    auto [key, value] = parse_key_value(option, item);
+    if (values.count(key))
+      throw invalid_argument(option, item, "conflicts with " + key + "=" + values.at(key) + "; give each key once");
+    values[key] = value;
+  }
+  return values;
+}
+
 SamplerSpec combine_sampler_options(std::string_view text, const std::vector<std::string>& params,
                                     std::string_view randomize) {
   Located located = parse_located(text);

@@ -7,8 +7,6 @@
 #include <sys/mman.h>
 
 #include <algorithm>
-#include <charconv>
-#include <sstream>
 
 #include "stratum/util/error.hpp"
 
@@ -17,42 +15,6 @@ namespace stratum::registry_support {
 std::optional<std::string> param_text(const SamplerRequest& request, const std::string& name) {
   if (auto it = request.params.find(name); it != request.params.end()) return it->second;
   return std::nullopt;
-}
-
-static std::int64_t parse_int(const std::string& name, const std::string& text) {
-  std::int64_t value = 0;
-  const char* end = text.data() + text.size();
-  auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end)
-    throw invalid_argument(name, text.empty() ? "''" : text, "must be an integer");
-  return value;
-}
-
-std::optional<std::int64_t> param_int(const SamplerRequest& request, const std::string& name) {
-  auto text = param_text(request, name);
-  if (!text) return std::nullopt;
-  return parse_int(name, *text);
-}
-
-bool param_bool(const SamplerRequest& request, const std::string& name, bool fallback) {
-  auto text = param_text(request, name);
-  if (!text) return fallback;
-  std::string t = *text;
-  std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (t == "1" || t == "true" || t == "yes" || t == "on") return true;
-  if (t == "0" || t == "false" || t == "no" || t == "off") return false;
-  throw invalid_argument(name, *text, "must be a boolean (1/0, true/false, yes/no)");
-}
-
-std::optional<std::vector<std::int64_t>> param_int_list(const SamplerRequest& request, const std::string& name) {
-  auto text = param_text(request, name);
-  if (!text) return std::nullopt;
-  std::vector<std::int64_t> values;
-  std::stringstream stream(*text);
-  std::string item;
-  while (std::getline(stream, item, ',')) values.push_back(parse_int(name, item));
-  if (values.empty()) throw invalid_argument(name, "''", "must be a comma-separated list of integers");
-  return values;
 }
 
 /// Large buffers ask Linux for transparent huge pages: first-touch page

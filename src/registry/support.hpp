@@ -11,14 +11,9 @@
 
 namespace stratum::registry_support {
 
-/// A request's parameter as text (generate_points has filled in defaults).
+/// A parameter as the user gave it, for messages (values are read from
+/// request.values, bound to the schema).
 std::optional<std::string> param_text(const SamplerRequest& request, const std::string& name);
-/// Integer parameter (throws naming the parameter when not an integer).
-std::optional<std::int64_t> param_int(const SamplerRequest& request, const std::string& name);
-/// Boolean parameter: 1/0, true/false, yes/no.
-bool param_bool(const SamplerRequest& request, const std::string& name, bool fallback);
-/// Comma-separated list of integers ("1,55,133").
-std::optional<std::vector<std::int64_t>> param_int_list(const SamplerRequest& request, const std::string& name);
 
 /// An uninitialized n × d buffer.
 PointSet allocate_points(std::size_t n, std::size_t d);

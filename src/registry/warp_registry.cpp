@@ -30,28 +30,35 @@ const WarpInfo& find_warp(std::string_view name) {
   throw invalid_argument("map", std::string(name).empty() ? "''" : std::string(name), "valid maps are " + names);
 }
 
+/// The schema's entry for `key`, or an error listing what the warp takes.
+static const Param& warp_param(const WarpInfo& info, const std::string& key, const std::string& value_text) {
+  if (const Param* param = find_param(info.params, key)) return *param;
+  refuse_unknown_param(info.name, info.params, key, value_text, "warp-param");
+}
+
+static std::string numbers_text(const std::vector<double>& values) {
+  std::string text;
+  for (double v : values) text += (text.empty() ? "" : ",") + to_message_string(v);
+  return text;
+}
+
 std::unique_ptr<const Warp> make_warp(std::string_view name, const WarpParams& params) {
   const WarpInfo& info = find_warp(name);
   WarpParams filled = params;
-  for (const auto& [key, value] : params) {
-    bool known = false;
-    std::string names;
-    for (const auto& spec : info.params) {
-      known = known || spec.name == key;
-      names += (names.empty() ? "" : ", ") + spec.name;
-    }
-    if (!known)
-      throw invalid_argument("parameter", key,
-                             info.name + (names.empty() ? " takes no parameters" : " takes " + names));
-    for (std::size_t i = 0; i < value.size(); ++i)
-      require(std::isfinite(value[i]), key, value[i], "must be finite");
-  }
-  for (const auto& spec : info.params) {
-    if (filled.count(spec.name)) continue;
-    require(!spec.default_value.empty(), spec.name, "(missing)", info.name + " needs it: " + spec.description);
-    filled[spec.name] = spec.default_value;
+  for (const auto& [key, value] : params) check_param(warp_param(info, key, numbers_text(value)), value);
+  for (const auto& param : info.params) {
+    if (filled.count(param.name)) continue;
+    require(!param.default_value.empty(), param.name, "(missing)", info.name + " needs it: " + param.description);
+    filled[param.name] = as_reals(parse_param(param, param.default_value));
   }
   return info.make(filled);
+}
+
+WarpParams parse_warp_params(std::string_view name, const std::map<std::string, std::string>& text) {
+  const WarpInfo& info = find_warp(name);
+  WarpParams params;
+  for (const auto& [key, value] : text) params[key] = as_reals(parse_param(warp_param(info, key, value), value));
+  return params;
 }
 
 namespace {

@@ -11,25 +11,28 @@ namespace stratum::registry_families {
 std::vector<WarpInfo> warps_densities_1d() {
   std::vector<WarpInfo> list;
   list.push_back({"linear", "density proportional to (1 - x) a + x b on [0, 1]", "interval [0, 1]", "length", false,
-                  {{"a", "1 number >= 0: weight at x = 0", {1}}, {"b", "1 number >= 0: weight at x = 1", {3}}},
+                  {params::real("a", "weight at x = 0", "1", at_least(0)),
+                   params::real("b", "weight at x = 1", "3", at_least(0))},
                   [](const WarpParams& params) {
                     return make_triad<1, 1>(LinearDensity<double>(scalar_param(params, "a"), scalar_param(params, "b")));
                   }});
   list.push_back({"tent", "tent density (1 - |x|/radius)/radius on [-radius, radius]", "interval [-radius, radius]",
-                  "length", false, {{"radius", "1 number > 0: half-width", {1}}}, [](const WarpParams& params) {
+                  "length", false, {params::real("radius", "half-width", "1", above(0))}, [](const WarpParams& params) {
                     return make_triad<1, 1>(TentDensity<double>(scalar_param(params, "radius")));
                   }});
   list.push_back({"exponential", "exponential density rate exp(-rate x) on [0, inf)", "interval [0, inf)", "length",
-                  false, {{"rate", "1 number > 0", {1}}}, [](const WarpParams& params) {
+                  false, {params::real("rate", "decay rate", "1", above(0))}, [](const WarpParams& params) {
                     return make_triad<1, 1>(ExponentialDensity<double>(scalar_param(params, "rate")));
                   }});
   list.push_back({"normal", "normal density N(mu, sigma^2) by its inverse CDF", "real line", "length", false,
-                  {{"mu", "1 number: mean", {0}}, {"sigma", "1 number > 0: standard deviation", {1}}},
+                  {params::real("mu", "mean", "0", any_real()),
+                   params::real("sigma", "standard deviation", "1", above(0))},
                   [](const WarpParams& params) {
                     return make_triad<1, 1>(NormalDensity<double>(scalar_param(params, "mu"), scalar_param(params, "sigma")));
                   }});
   list.push_back({"bilinear", "bilinear density on [0, 1]^2 from 4 corner weights", "square [0, 1]^2", "area", false,
-                  {{"weights", "4 numbers >= 0, not all zero: w(0,0), w(1,0), w(0,1), w(1,1)", {1, 2, 3, 4}}},
+                  {params::reals("weights", "corner weights w(0,0), w(1,0), w(0,1), w(1,1), not all zero", "1,2,3,4",
+                                 at_least(0), {4, 4})},
                   [](const WarpParams& params) {
                     const auto& w = params.at("weights");
                     require(w.size() == 4, "weights", to_message_string(w.size()) + " numbers",

@@ -59,13 +59,14 @@ std::vector<WarpInfo> warps_disk_sphere() {
                   }});
   list.push_back({"cone", "uniform directions in the cap cos(theta) >= cos_theta_max around +z", "spherical cap",
                   "solid angle", true,
-                  {{"cos_theta_max", "1 number in [-1, 1): cosine of the cap's half-angle", {0.5}}},
+                  {params::real("cos_theta_max", "cosine of the cap's half-angle", "0.5", half_open(-1, 1))},
                   [](const WarpParams& params) {
                     return make_triad<2, 3>(UniformCone<double>(scalar_param(params, "cos_theta_max")));
                   }});
   list.push_back({"triangle", "uniform points in a triangle (Heitz 2019 low-distortion map), in its own space",
                   "triangle", "area", true,
-                  {{"vertices", "3x2 or 3x3 vertices, row-major (6 or 9 numbers)", {0, 0, 1, 0, 0, 1}}},
+                  {params::reals("vertices", "3x2 or 3x3 vertices, row-major (6 or 9 numbers)", "0,0,1,0,0,1", any_real(),
+                                 {6, 9})},
                   make_triangle});
   return list;
 }

@@ -43,19 +43,23 @@ std::unique_ptr<const Warp> wrap(Map map) {
   return make_triad<2, 3>(std::move(map));
 }
 
-std::vector<WarpParamSpec> triangle_params() {
-  return {{"vertices", "3x3 triangle vertices, row-major (one vertex per row)", {0, 0, 1, 1, 0, 1, 0, 1, 1}},
-          {"origin", "3 numbers: the point the triangle is seen from", {0, 0, 0}}};
+/// A point or direction of 3D space.
+Param vector3(std::string name, std::string description, std::string default_value) {
+  return params::reals(std::move(name), std::move(description), std::move(default_value), any_real(), {3, 3});
 }
-std::vector<WarpParamSpec> rectangle_params() {
-  return {{"corner", "3 numbers: one corner of the rectangle", {-0.5, -0.5, 1}},
-          {"edge_u", "3 numbers: first edge from the corner", {1, 0, 0}},
-          {"edge_v", "3 numbers: second edge from the corner, perpendicular to edge_u", {0, 1, 0}},
-          {"origin", "3 numbers: the point the rectangle is seen from (not on its plane)", {0, 0, 0}}};
+
+std::vector<Param> triangle_params() {
+  return {params::reals("vertices", "3x3 triangle vertices, row-major (one vertex per row)", "0,0,1,1,0,1,0,1,1",
+                        any_real(), {9, 9}),
+          vector3("origin", "the point the triangle is seen from", "0,0,0")};
 }
-WarpParamSpec normal_param() {
-  return {"normal", "3 numbers: normal of the receiving surface at the origin", {0, 0, 1}};
+std::vector<Param> rectangle_params() {
+  return {vector3("corner", "one corner of the rectangle", "-0.5,-0.5,1"),
+          vector3("edge_u", "first edge from the corner", "1,0,0"),
+          vector3("edge_v", "second edge from the corner, perpendicular to edge_u", "0,1,0"),
+          vector3("origin", "the point the rectangle is seen from (not on its plane)", "0,0,0")};
 }
+Param normal_param() { return vector3("normal", "normal of the receiving surface at the origin", "0,0,1"); }
 
 }  // namespace
 

@@ -72,8 +72,8 @@ std::vector<WarpInfo> warps_tabulated() {
                   "density proportional to a tabulated function on width equal bins of [0,1] (pbrt-v4 "
                   "PiecewiseConstant1D), by CDF inversion",
                   "interval", "length", false,
-                  {{"values", "the function's values, non-negative, not all zero", {}},
-                   {"width", "1 number: how many values (bins)", {}}},
+                  {params::reals("values", "the function's values, not all zero", "", at_least(0)),
+                   params::integer("width", "how many values (bins)", "", closed(1, 0x1p40))},
                   [](const WarpParams& p) -> std::unique_ptr<const Warp> {
                     const std::size_t width = positive_integer(p, "width");
                     const auto& values = p.at("values");
@@ -85,9 +85,9 @@ std::vector<WarpInfo> warps_tabulated() {
                   "density proportional to a tabulated function on a width x height grid of [0,1]^2 (e.g. an "
                   "environment map): marginal rows, then conditional columns (pbrt-v4 PiecewiseConstant2D)",
                   "square", "area", false,
-                  {{"values", "height rows of width values, row-major; non-negative, not all zero", {}},
-                   {"width", "1 number: values per row (x bins)", {}},
-                   {"height", "1 number: rows (y bins)", {}}},
+                  {params::reals("values", "height rows of width values, row-major; not all zero", "", at_least(0)),
+                   params::integer("width", "values per row (x bins)", "", closed(1, 0x1p40)),
+                   params::integer("height", "rows (y bins)", "", closed(1, 0x1p40))},
                   [](const WarpParams& p) -> std::unique_ptr<const Warp> {
                     const std::size_t width = positive_integer(p, "width"), height = positive_integer(p, "height");
                     return make_triad<2, 2>(PiecewiseConstant2D<double>(p.at("values"), width, height));
@@ -95,7 +95,7 @@ std::vector<WarpInfo> warps_tabulated() {
   list.push_back({"alias",
                   "alias method (Walker 1977, Vose 1991): index i of n weights with probability w_i / sum in O(1); "
                   "returns x = (i + leftover)/n in [0,1), so i = floor(n x); pdf = pmf(i) n",
-                  "interval", "length", false, {{"values", "the n weights, non-negative, not all zero", {}}},
+                  "interval", "length", false, {params::reals("values", "the n weights, not all zero", "", at_least(0))},
                   [](const WarpParams& p) -> std::unique_ptr<const Warp> {
                     return std::make_unique<AliasWarp>(p.at("values"));
                   }});

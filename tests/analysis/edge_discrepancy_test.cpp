@@ -247,7 +247,7 @@ TEST(EdgeDiscrepancyMeasures, RegistryFacesAndBadInput) {
   EXPECT_NE(error_of("edge-random", xs, 2, {{"lines", "-3"}}).find("invalid lines = -3"), std::string::npos);
   EXPECT_NE(error_of("edge-random", xs, 2, {{"lines", "1e3"}}).find("invalid lines = 1e3"), std::string::npos);
   EXPECT_NE(error_of("edge-random", xs, 2, {{"seed", "x"}}).find("invalid seed = x"), std::string::npos);
-  EXPECT_NE(error_of("edge", xs, 2, {{"lines", "10"}}).find("invalid parameter = lines"), std::string::npos);
+  EXPECT_NE(error_of("edge", xs, 2, {{"lines", "10"}}).find("invalid measure-param = lines=10: edge takes no parameters"), std::string::npos);
   EXPECT_NE(error_of("edge", {0.5, 0.5}, 2).find("invalid n = 1"), std::string::npos);
   EXPECT_THROW(random_edge_discrepancy(view(xs), 0, 0), invalid_argument);
   EXPECT_THROW(edge_discrepancy({xs.data(), 25, 4}), invalid_argument);

@@ -199,21 +199,26 @@ TEST(Integrands, BadInput) {
             std::string::npos);
   EXPECT_NE(error_of([] { make_integrand("disk", 3); }).find("invalid d = 3"), std::string::npos);
   EXPECT_NE(error_of([] { make_integrand("genz-corner-peak", 51); }).find("invalid d = 51"), std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("disk", 2, {{"a", {1}}}); }).find("invalid parameter = a: disk takes no"),
+  EXPECT_NE(error_of([] { make_integrand("disk", 2, {{"a", {1}}}); }).find("invalid integrand-param = a=1: disk takes no"),
             std::string::npos);
   EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 3, {{"a", {1, 2}}}); }).find("invalid a = 2 numbers: needs 1 number or d = 3"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 2, {{"a", {-1}}}); }).find("invalid a = -1"),
+  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 2, {{"a", {-1}}}); }).find("invalid a[0] = -1: must be a finite real in (0, inf)"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 2, {{"u", {1.5}}}); }).find("invalid u = 1.5"),
+  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 2, {{"u", {1.5}}}); }).find("invalid u[0] = 1.5: must be a finite real in [0, 1]"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-oscillatory", 2, {{"a", {NAN}}}); }).find("invalid a = nan"),
+  EXPECT_NE(error_of([] { make_integrand("genz-oscillatory", 2, {{"a", {NAN}}}); }).find("invalid a[0] = nan"),
             std::string::npos);
   EXPECT_NE(error_of([] { make_integrand("edge-random", 2, {{"seed", {1.5}}}); }).find("invalid seed = 1.5"),
             std::string::npos);
-  EXPECT_NE(error_of([] { parse_integrand_param("a", "1,x"); }).find("invalid a = 1,x"), std::string::npos);
-  EXPECT_NE(error_of([] { parse_integrand_param("a", ""); }).find("invalid a = ''"), std::string::npos);
-  EXPECT_EQ(parse_integrand_param("a", "1,2.5,-3"), (std::vector<double>{1, 2.5, -3}));
+  const auto parse = [](const char* text) { return parse_integrand_params("genz-oscillatory", {{"a", text}}).at("a"); };
+  EXPECT_NE(error_of([&] { parse("1,x"); }).find("invalid a[1] = x"), std::string::npos);
+  EXPECT_NE(error_of([&] { parse(""); }).find("invalid a = ''"), std::string::npos);
+  EXPECT_NE(error_of([&] { parse("1e999"); }).find("invalid a[0] = 1e999: must be a finite real (a takes 1 to 1024 reals)"), std::string::npos);
+  EXPECT_EQ(parse("1,2.5,-3"), (std::vector<double>{1, 2.5, -3}));
+  EXPECT_NE(error_of([] { parse_integrand_params("genz-oscillatory", {{"b", "1"}}); })
+                .find("invalid integrand-param = b=1: genz-oscillatory takes a, u"),
+            std::string::npos);
   const auto f = make_integrand("bilinear", 2);
   const std::vector<double> bad{0.5, 0.5, 0.2, NAN};
   EXPECT_NE(error_of([&] { evaluate_integrand(*f, bad.data(), 2); }).find("invalid point[1][1] = nan"),

@@ -114,7 +114,7 @@ expect_error "l2-star, cd" discrepancy "$tmp/x.txt" --measure nosuch
 expect_error "edge is defined for d in \[2, 2\]" discrepancy "$tmp/x.txt" --measure edge
 expect_error "invalid algorithm = fast" discrepancy "$tmp/x5.npy" --measure l2-star --measure-param algorithm=fast
 expect_error "invalid algorithm = quick" discrepancy "$tmp/x.txt" --measure l2-star --measure-param algorithm=quick
-expect_error "invalid parameter = lines" discrepancy "$tmp/x.txt" --measure cd --measure-param lines=5
+expect_error "invalid measure-param = lines=5: cd takes no parameters" discrepancy "$tmp/x.txt" --measure cd --measure-param lines=5
 expect_error "invalid measure-param = bogus" discrepancy "$tmp/x.txt" --measure all --measure-param bogus=1
 expect_error "invalid measure-param = lines" discrepancy "$tmp/x.txt" --measure cd --measure-param lines
 expect_error "invalid input" discrepancy --measure cd

@@ -67,8 +67,8 @@ expect_error "invalid n = (missing)" integrate --integrand disk
 expect_error "invalid integrand = nosuch" integrate --integrand nosuch -n 10
 expect_error "invalid sampler = nosuch" integrate --integrand disk --sampler nosuch -n 10
 expect_error "invalid d = 3" integrate --integrand disk -n 10 -d 3
-expect_error "invalid a = x" integrate --integrand genz-gaussian -n 10 --integrand-param a=x
-expect_error "invalid parameter = bogus" integrate --integrand genz-gaussian -n 10 --integrand-param bogus=1
+expect_error "invalid a\[0] = x: must be a finite real in (0, inf)" integrate --integrand genz-gaussian -n 10 --integrand-param a=x
+expect_error "invalid integrand-param = bogus=1: genz-gaussian takes a, u" integrate --integrand genz-gaussian -n 10 --integrand-param bogus=1
 expect_error "invalid randomize = owen" integrate --integrand disk --sampler random --randomize owen -n 10
 expect_error "invalid runs = 0" integrate --integrand disk -n 10 --runs 0
 # The default --n works for every integrand and sampler pair of the registry's

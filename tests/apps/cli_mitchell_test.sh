@@ -36,7 +36,7 @@ expect_error "invalid lines = 0" discrepancy --sampler random -n 10 -d 2 --measu
 expect_error "invalid lines = -4" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param lines=-4
 expect_error "invalid lines = many" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param lines=many
 expect_error "invalid seed = -1" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param seed=-1
-expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 -d 2 --measure edge --measure-param lines=5
+expect_error "invalid measure-param = lines=5: edge takes no parameters" discrepancy --sampler random -n 10 -d 2 --measure edge --measure-param lines=5
 printf '0.5 0.5\n0.2 1.5\n' >"$tmp/outside.txt"
 expect_error "point\[1\]\[1\]" discrepancy "$tmp/outside.txt" --measure edge
 

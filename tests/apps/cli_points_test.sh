@@ -29,7 +29,7 @@ k=$("$stratum" points -s kronecker -n 2 -d 2 --randomize none | sed -n 2p)
 k=$("$stratum" points -s kronecker -n 4 -d 1 -p alpha=0.25 -p offset=0.5 | tr '\n' ' ')
 [ "$k" = "0.5 0.75 0 0.25 " ] && ok || fail "kronecker alpha=0.25 offset=0.5, got $k"
 expect_error "invalid alpha" points -s kronecker -n 4 -d 2 -p alpha=0.5
-expect_error "entry 0" points -s kronecker -n 4 -d 1 -p alpha=1.5
+expect_error "invalid alpha\[0] = 1.5: must be a finite real in (0, 1)" points -s kronecker -n 4 -d 1 -p alpha=1.5
 f=$("$stratum" points -s faure -n 4 -d 3 --randomize none | sed -n 4p)
 [ "$f" = "0.1111111111111111 0.4444444444444444 0.7777777777777778" ] && ok || fail "faure point 3, got $f"
 expect_error "randomize" points -s faure -n 4 -d 3 --randomize lms

@@ -57,7 +57,7 @@ expect_error "invalid d = 7" discrepancy --sampler random -n 300 -d 7 --measure 
 expect_error "method=bounds" discrepancy --sampler random -n 300 -d 7 --measure star --measure-param method=exact
 expect_error "invalid method = fast" discrepancy --sampler random -n 10 --measure star --measure-param method=fast
 expect_error "invalid delta = 2" discrepancy --sampler random -n 10 --measure star --measure-param method=bounds --measure-param delta=2
-expect_error "invalid parameter = lines" discrepancy --sampler random -n 10 --measure star --measure-param lines=5
+expect_error "invalid measure-param = lines=5: star takes method, delta, max_boxes" discrepancy --sampler random -n 10 --measure star --measure-param lines=5
 expect_error "invalid max_boxes = 0" discrepancy --sampler random -n 10 --measure star --measure-param max_boxes=0
 printf '0.5 0.5\n' >"$tmp/one.txt"
 expect_error "invalid n = 1" discrepancy "$tmp/one.txt" --measure star

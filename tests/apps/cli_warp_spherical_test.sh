@@ -45,20 +45,20 @@ assert set(i) <= {0, 2} and np.allclose(a[:, 1], np.array([0.25, 0, 0.75])[i] * 
 expect_error "invalid vertices = (0, 0, 1), (1, 1, 1), (2, 2, 1)" warp --map spherical-triangle -n 4 --warp-param vertices=0,0,1,1,1,1,2,2,1
 expect_error "positive solid angle" warp --map spherical-triangle -n 4 --warp-param vertices=1,0,0,0,1,0,1,1,0
 expect_error "each vertex must differ from the origin" warp --map spherical-triangle-projected -n 4 --warp-param vertices=0,0,0,1,0,1,0,1,1
-expect_error "invalid vertices = (6 numbers): must be 9 numbers" warp --map spherical-triangle -n 4 --warp-param vertices=0,0,1,1,0,1
+expect_error "invalid vertices = (6 values): must be 9 finite reals" warp --map spherical-triangle -n 4 --warp-param vertices=0,0,1,1,0,1
 expect_error "invalid edge_u = (0, 0, 0): must be non-zero" warp --map spherical-rectangle -n 4 --warp-param edge_u=0,0,0
 expect_error "must not be parallel to edge_u" warp --map spherical-rectangle -n 4 --warp-param edge_u=1,0,0 --warp-param edge_v=3,0,0
 expect_error "must be perpendicular to edge_u" warp --map spherical-rectangle-projected -n 4 --warp-param edge_v=1,1,0
 expect_error "invalid origin = (0.25, 3, 1): must not lie on the rectangle's plane" warp --map spherical-rectangle -n 4 --warp-param origin=0.25,3,1
 expect_error "invalid normal = (0, 0, 0): must be a non-zero vector" warp --map spherical-triangle-projected -n 4 --warp-param normal=0,0,0
-expect_error "invalid values[1] = -1: must be finite and non-negative" warp --map piecewise-1d -n 4 --warp-param values=1,-1 --warp-param width=2
+expect_error "invalid values[1] = -1: must be a finite real in [0, inf)" warp --map piecewise-1d -n 4 --warp-param values=1,-1 --warp-param width=2
 expect_error "invalid values = (all 3 values zero)" warp --map alias -n 4 --warp-param values=0,0,0
-expect_error "invalid values = nan: must be finite" warp --map piecewise-2d -n 4 --warp-param values=1,nan --warp-param width=2 --warp-param height=1
+expect_error "invalid values[1] = nan: must be a finite real" warp --map piecewise-2d -n 4 --warp-param values=1,nan --warp-param width=2 --warp-param height=1
 expect_error "invalid values = (5 values): must hold width × height = 2 × 2 = 4 values" warp --map piecewise-2d -n 4 --warp-param values=1,2,3,4,5 --warp-param width=2 --warp-param height=2
 expect_error "invalid values = (3 values): must hold width = 4 values" warp --map piecewise-1d -n 4 --warp-param values=1,2,3 --warp-param width=4
-expect_error "invalid width = 2.5: must be a positive integer" warp --map piecewise-2d -n 4 --warp-param values=1,2 --warp-param width=2.5 --warp-param height=1
-expect_error "invalid height = 0: must be a positive integer" warp --map piecewise-2d -n 4 --warp-param values=1,2 --warp-param width=2 --warp-param height=0
-expect_error "invalid width = -2: must be a positive integer" warp --map piecewise-1d -n 4 --warp-param values=1,2 --warp-param width=-2
+expect_error "invalid width = 2.5: must be an integer in [1, 2^40]" warp --map piecewise-2d -n 4 --warp-param values=1,2 --warp-param width=2.5 --warp-param height=1
+expect_error "invalid height = 0: must be an integer in [1, 2^40]" warp --map piecewise-2d -n 4 --warp-param values=1,2 --warp-param width=2 --warp-param height=0
+expect_error "invalid width = -2: must be an integer in [1, 2^40]" warp --map piecewise-1d -n 4 --warp-param values=1,2 --warp-param width=-2
 expect_error "invalid values = (missing)" warp --map alias -n 4
 expect_error "invalid origin = (0.25, 3, 1)" warp --map spherical-rectangle -n 4 --warp-param origin=0.25,3,1 -o "$tmp/bad.npy" --format npy
 [ ! -e "$tmp/bad.npy" ] && ok || fail "partial file left after bad parameter"

@@ -62,8 +62,8 @@ expect_error "invalid sigma = 0" warp --map normal -n 4 --warp-param sigma=0
 expect_error "invalid a = -1" warp --map linear -n 4 --warp-param a=-1
 expect_error "not both be zero" warp --map linear -n 4 --warp-param a=0 --warp-param b=0
 expect_error "invalid weights" warp --map bilinear -n 4 --warp-param weights=0,0,0,0
-expect_error "invalid parameter = radius" warp --map disk-polar -n 4 --warp-param radius=1
-expect_error "invalid cos_theta_max = x: must be a number" warp --map cone -n 4 --warp-param cos_theta_max=x
+expect_error "invalid warp-param = radius=1: disk-polar takes no parameters" warp --map disk-polar -n 4 --warp-param radius=1
+expect_error "invalid cos_theta_max = x: must be a finite real in \[-1, 1)" warp --map cone -n 4 --warp-param cos_theta_max=x
 expect_error "invalid warp-param = 0.5" warp --map cone -n 4 --warp-param 0.5
 expect_error "invalid vertices = /nonexistent/v.txt: does not exist" warp --map triangle -n 4 --warp-param vertices=@/nonexistent/v.txt
 expect_error "sampler" warp --map disk-polar -n 4 --sampler nosuch

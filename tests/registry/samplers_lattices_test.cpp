@@ -100,12 +100,13 @@ TEST(SamplersLattices, BadParametersNameTheParameter) {
   };
   const std::vector<Case> cases = {
       {request_of(89, 3, {{"generator", "1,55"}}), "generator", "has 2 entries; d = 3 needs 3"},
-      {request_of(89, 2, {{"generator", "1,0"}}), "generator", "entry 1 = 0"},
+      {request_of(89, 2, {{"generator", "1,0"}}), "generator[1]", "invalid generator[1] = 0: must be an integer in [1, inf)"},
       {request_of(89, 2, {{"generator", "1,89"}}), "generator", "[1, 89)"},
-      {request_of(89, 2, {{"generator", "1,-3"}}), "generator", "entry 1 = -3"},
-      {request_of(89, 2, {{"generator", "1,x"}}), "generator", "integer"},
+      {request_of(89, 2, {{"generator", "1,-3"}}), "generator[1]", "invalid generator[1] = -3"},
+      {request_of(89, 2, {{"generator", "1,x"}}), "generator[1]", "integer"},
       {request_of(89, 2, {{"generator", "1,55"}, {"a", "55"}}), "generator", "not both"},
-      {request_of(89, 2, {{"a", "0"}}), "a", "[1, 89)"},
+      {request_of(89, 2, {{"a", "0"}}), "a", "invalid a = 0: must be an integer in [1, inf)"},
+      {request_of(89, 2, {{"a", "89"}}), "a", "[1, 89)"},
       {request_of(100, 3, {{"a", "10"}}), "a", "coprime"},
       {request_of(89, 2, {{"gamma", "2"}}), "gamma", "(0, 1]"},
       {request_of(89, 2, {{"gamma", "abc"}}), "gamma", "(0, 1]"},

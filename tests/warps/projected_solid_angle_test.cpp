@@ -202,7 +202,7 @@ TEST(WarpProjectedSolidAngle, BadInputAndRegistry) {
   for (const char* name : {"spherical-triangle-projected", "spherical-rectangle-projected"}) {
     const std::string zero = error_of(name, {{"normal", {0, 0, 0}}});
     EXPECT_NE(zero.find("invalid normal = (0, 0, 0): must be a non-zero vector"), std::string::npos) << zero;
-    EXPECT_NE(error_of(name, {{"normal", {0, 1}}}).find("invalid normal = (2 numbers)"), std::string::npos);
+    EXPECT_NE(error_of(name, {{"normal", {0, 1}}}).find("invalid normal = (2 values): must be 3 finite reals"), std::string::npos);
     EXPECT_FALSE(find_warp(name).area_preserving);
     EXPECT_EQ(error_of(name, {}), "");
   }

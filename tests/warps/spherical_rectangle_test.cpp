@@ -230,8 +230,8 @@ TEST(WarpSphericalRectangle, BadInput) {
   const std::string inside_plane = error_of({{"origin", {0, 0, 1}}});
   EXPECT_NE(inside_plane.find("invalid origin = (0, 0, 1)"), std::string::npos) << inside_plane;
   const std::string short_corner = error_of({{"corner", {1, 2}}});
-  EXPECT_NE(short_corner.find("invalid corner = (2 numbers): must be 3 numbers"), std::string::npos) << short_corner;
-  EXPECT_NE(error_of({{"corner", {1, INFINITY, 0}}}).find("must be finite"), std::string::npos);
+  EXPECT_NE(short_corner.find("invalid corner = (2 values): must be 3 finite reals"), std::string::npos) << short_corner;
+  EXPECT_NE(error_of({{"corner", {1, INFINITY, 0}}}).find("invalid corner[1] = inf: must be a finite real"), std::string::npos);
   EXPECT_EQ(error_of({}), "");
 }
 

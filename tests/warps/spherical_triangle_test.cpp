@@ -222,10 +222,10 @@ TEST(WarpSphericalTriangle, BadInput) {
             std::string::npos)
       << at_origin;
   const std::string short_list = error_of({{"vertices", {0, 0, 1, 1, 0, 1}}});
-  EXPECT_NE(short_list.find("invalid vertices = (6 numbers): must be 9 numbers"), std::string::npos) << short_list;
+  EXPECT_NE(short_list.find("invalid vertices = (6 values): must be 9 finite reals"), std::string::npos) << short_list;
   const std::string bad_origin = error_of({{"origin", {0, 0}}});
-  EXPECT_NE(bad_origin.find("invalid origin = (2 numbers): must be 3 numbers"), std::string::npos) << bad_origin;
-  EXPECT_NE(error_of({{"vertices", {0, 0, 1, 1, 0, 1, 0, NAN, 1}}}).find("must be finite"), std::string::npos);
+  EXPECT_NE(bad_origin.find("invalid origin = (2 values): must be 3 finite reals"), std::string::npos) << bad_origin;
+  EXPECT_NE(error_of({{"vertices", {0, 0, 1, 1, 0, 1, 0, NAN, 1}}}).find("invalid vertices[7] = nan: must be a finite real"), std::string::npos);
   EXPECT_EQ(error_of({}), "");  // the defaults are a valid triangle
 }
 

@@ -17,17 +17,13 @@
 #include <string_view>
 #include <vector>
 
+#include "stratum/registry/params.hpp"
+
 namespace stratum::analysis {
 
 /// Integrand parameters by name, each a flat list of numbers (as warps take
 /// them): Genz `a` and `u` are one number (used in every dimension) or d.
 using IntegrandParams = std::map<std::string, std::vector<double>>;
-
-struct IntegrandParamSpec {
-  std::string name;
-  std::string description;            ///< includes the expected length
-  std::vector<double> default_value;  ///< never empty: every parameter has a default
-};
 
 /// An integrand with its parameters and dimension validated once.
 class Integrand {
@@ -49,7 +45,7 @@ struct IntegrandInfo {
   unsigned max_dim = 1;
   unsigned default_dim = 2;
   std::vector<std::string> properties;  ///< "smooth", "discontinuous", "indicator", "kink", ...
-  std::vector<IntegrandParamSpec> params;
+  std::vector<Param> params;  ///< numbers (reals or integers); every one has a default
   /// Builds the integrand for dimension d (already checked against
   /// [min_dim, max_dim]) and params (defaults filled in, names checked);
   /// throws stratum::invalid_argument naming a bad parameter value.
@@ -66,9 +62,9 @@ const IntegrandInfo& find_integrand(std::string_view name);
 /// unknown parameter names and non-finite values, fills defaults, then makes.
 std::unique_ptr<const Integrand> make_integrand(std::string_view name, unsigned d, const IntegrandParams& params = {});
 
-/// Parses "1,2.5,3" into numbers for parameter `name` (the CLI's -p key=value
-/// and any other text face); throws invalid_argument naming the parameter.
-std::vector<double> parse_integrand_param(std::string_view name, std::string_view text);
+/// Parameters given as text (the CLI's --integrand-param KEY=1,2.5,3), parsed
+/// by the schema's one parser; throws invalid_argument naming the parameter.
+IntegrandParams parse_integrand_params(std::string_view integrand, const std::map<std::string, std::string>& text);
 
 /// f at each of n points of integrand.dimension() coordinates, after checking
 /// every coordinate is finite and in [0,1] (the message names row and column).

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "stratum/registry.hpp"  // ParamSpec
+#include "stratum/registry/params.hpp"
 
 namespace stratum::analysis {
 
@@ -27,6 +27,8 @@ struct PointView {
 struct MeasureRequest {
   std::map<std::string, std::string> params;  ///< measure-specific, as text ("lines=10000")
   unsigned threads = 1;
+  /// `params` bound to the measure's schema by compute_measure; entries read here.
+  ParamValues values{};
 };
 
 struct MeasureResult {
@@ -43,7 +45,7 @@ struct MeasureInfo {
   std::string description;  ///< one line, with the definition's source
   std::size_t min_dim = 1;
   std::size_t max_dim = 0;  ///< 0: no limit
-  std::vector<ParamSpec> params;
+  std::vector<Param> params;  ///< the schema of MeasureRequest::params
   /// Checks params and dimension-specific limits (e.g. an exact method's
   /// largest d), throwing stratum::invalid_argument that says which method can.
   std::function<void(const PointView&, const MeasureRequest&)> validate;

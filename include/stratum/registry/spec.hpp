@@ -56,6 +56,10 @@ std::vector<SamplerSpec> parse_sampler_list(std::string_view text);
 /// errors): a non-empty key, '=', a non-empty value.
 std::pair<std::string, std::string> parse_key_value(std::string_view option, std::string_view item);
 
+/// Every item of a repeatable KEY=VALUE option (--integrand-param,
+/// --warp-param, --measure-param); a key given twice is an error.
+std::map<std::string, std::string> parse_key_values(std::string_view option, const std::vector<std::string>& items);
+
 /// The sampler a face was given in parts: the spec text (`-s`), KEY=VALUE
 /// items (`-p`, repeatable) and a randomizer (`--randomize`). Parses the spec,
 /// adds the items and the randomizer, and throws naming both forms when the
