@@ -317,12 +317,12 @@ class Sobol(_Sequence):
             warnings.warn("The balance properties of Sobol' points require n to be a power of 2.", stacklevel=2)
         return super().random(n, workers=workers)
 
-    def _random(self, n=1, *, workers=1):
-        sample = self._draw(n, self.num_generated, workers)
-        # Keep `bits` binary digits, as scipy's bits-wide generator does; for
-        # LMS and Owen scrambling this is the same scramble on `bits` digits.
-        scale = float(2**self.bits)
-        return np.floor(sample * scale) / scale
+    def _draw(self, n, start, threads):
+        # Keep `bits` binary digits, as scipy's bits-wide generator does (the
+        # registry's bits parameter, done as the points are written); for LMS
+        # and Owen scrambling this is the same scramble on `bits` digits.
+        return _points(self._registry_name, n, self.d, seed=self._stratum_seed, randomize=self.randomize,
+                       start=start, threads=threads, bits=self.bits, **self._params)
 
     def random_base2(self, m):
         """Draw n = 2**m points; the total drawn so far must stay a power of 2."""

@@ -151,3 +151,21 @@ def test_any_start_and_thread_count_give_the_same_rows(randomize, d):
     for start in [1, 333, 777] + ([4096] if d < 300 else []):
         part = stratum.points("sobol", n - start, d, seed=4, randomize=randomize, start=start, threads=2)
         assert np.array_equal(part, whole[start:]), start
+
+
+def test_bits_parameter_keeps_the_first_digits():
+    """bits=b (scipy's Sobol bits, done in the generator): floor(x 2^b) / 2^b
+    of the full points, for every randomizer; qmc.Sobol(bits=b) uses it."""
+    for randomize in RANDOMIZERS:
+        full = stratum.points("sobol", 512, 5, seed=3, randomize=randomize)
+        kept = stratum.points("sobol", 512, 5, seed=3, randomize=randomize, bits=9)
+        assert np.array_equal(kept, np.floor(full * 2**9) / 2**9), randomize
+    from stratum import qmc as stratum_qmc
+    engine = stratum_qmc.Sobol(4, bits=12, seed=7)
+    sample = engine.random(1024)
+    raw = stratum.points("sobol", 1024, 4, seed=engine.stratum_seed, randomize="lms")
+    assert np.array_equal(sample, np.floor(raw * 2**12) / 2**12)
+    assert np.array_equal(stratum_qmc.Sobol(6, scramble=False, bits=10).random(1024), scipy_sobol(6, 1024, bits=10))
+    for bad in (0, 65):
+        with pytest.raises(stratum.InvalidArgument, match=f"bits = {bad}"):
+            stratum.points("sobol", 4, 2, bits=bad)

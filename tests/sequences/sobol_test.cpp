@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <boost/random/detail/sobol_table.hpp>
 #include <boost/random/sobol.hpp>
 #include <cstring>
@@ -461,6 +462,43 @@ TEST(SobolRegistry, DefaultIsOwenHashAndZeroTwoIsTheFirstTwoDimensions) {
   request.randomize = "cp";
   request.d = 2;
   EXPECT_THROW(generate_points("zero-two", request), invalid_argument);
+}
+
+// bits=b keeps b digits of every coordinate after the randomizer: exactly
+// floor(x 2^b) / 2^b of the full points, for each randomizer and layout
+// (the linear ones through masked columns, the others at the finish).
+TEST(SobolRegistry, BitsKeepsTheFirstDigits) {
+  for (unsigned d : {3u, 8u, 300u})
+    for (const char* randomize : {"none", "xor", "lms", "owen-hash", "owen", "cp"})
+      for (unsigned bits : {1u, 7u, 30u, 52u, 53u, 60u}) {
+        SamplerRequest request;
+        request.n = 700;
+        request.d = d;
+        request.seed = 9;
+        request.start = 3;
+        request.randomize = randomize;
+        const PointSet full = generate_points("sobol", request);
+        request.params["bits"] = std::to_string(bits);
+        const PointSet kept = generate_points("sobol", request);
+        const double scale = std::ldexp(1.0, int(bits));
+        for (std::uint64_t i = 0; i < *request.n; ++i)
+          for (unsigned j = 0; j < d; ++j)
+            ASSERT_EQ(kept(i, j), std::floor(full(i, j) * scale) / scale)
+                << randomize << " d " << d << " bits " << bits << " i " << i << " j " << j;
+      }
+  for (const char* bad : {"0", "65", "-1", "x"}) {
+    SamplerRequest request;
+    request.n = 4;
+    request.d = 2;
+    request.randomize = "none";
+    request.params["bits"] = bad;
+    try {
+      generate_points("sobol", request);
+      FAIL() << bad;
+    } catch (const invalid_argument& e) {
+      EXPECT_EQ(e.argument(), "bits") << bad;
+    }
+  }
 }
 
 TEST(SobolRegistry, RejectsBadOrderAndTooManyDimensions) {
