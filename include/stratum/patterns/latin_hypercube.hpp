@@ -48,6 +48,19 @@ class LatinHypercube {
     return cell_coordinate<Real>(cell, offset, count_);
   }
 
+  /// The jitter hashes as a chain: offset(index, dim) = hash64(key, index,
+  /// dim) = hash64_extend(hash64_extend(hash64(key), index), dim), so a row
+  /// shares its first link (row_key(index)) over its coordinates.
+  std::uint64_t row_key(std::uint64_t index) const noexcept {
+    return hash64_extend(hash64(hash64(seed_, 0x4a4954544552ULL)), index);
+  }
+  /// coordinate(cell, index, dim) from row_key(index).
+  template <class Real = double>
+  Real coordinate_in_row(std::uint64_t cell, std::uint64_t row_key, unsigned dim) const noexcept {
+    const double offset = centered_ ? 0.5 : bits_to_double(hash64_extend(row_key, dim));
+    return cell_coordinate<Real>(cell, offset, count_);
+  }
+
   /// All points, row-major (count() × dimensions() values), using `scratch`
   /// of count() integers.
   template <class Real = double, class Index>
