@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "bulk_permutation.hpp"
 #include "families.hpp"
 #include "stratum/patterns/grid.hpp"
 #include "stratum/patterns/jittered.hpp"
@@ -144,7 +145,13 @@ static void fill_latin_hypercube(const LatinHypercube& lhs, const SamplerRequest
   std::vector<Index> cells(std::size_t{std::min(block, d)} * n);
   for (unsigned first = 0; first < d; first += block) {
     const unsigned width = std::min(block, d - first);
-    for (unsigned b = 0; b < width; ++b) lhs.permutation(first + b, cells.data() + std::size_t{b} * n);
+    for (unsigned b = 0; b < width; ++b) {
+      Index* column = cells.data() + std::size_t{b} * n;
+      if constexpr (sizeof(Index) == sizeof(std::uint32_t))
+        bulk_random_permutation(column, n, lhs.permutation_key(first + b));
+      else
+        lhs.permutation(first + b, column);
+    }
     parallel_rows(n, request.threads, [&](std::uint64_t begin, std::uint64_t end) {
       for (std::uint64_t i = begin; i < end; ++i) {
         const std::uint64_t key = lhs.row_key(i);

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "../patterns/unbiased.hpp"
+#include "bulk_permutation.hpp"
 #include "error_of.hpp"
 #include "stratum/patterns/latin_hypercube.hpp"
+#include "stratum/patterns/strata.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 
@@ -64,6 +66,18 @@ TEST(PatternRegistry, NRooksEqualsLatinHypercubeGenerate) {
             for (unsigned j = 0; j < d; ++j)
               ASSERT_EQ(points(i, j), expected[i * d + j]) << "d " << d << " n " << n << " i " << i << " j " << j;
         }
+}
+
+// The bulk Fisher-Yates (vectorized draws) is random_permutation exactly:
+// n below, at and past its chunk of 2048 steps, several keys.
+TEST(PatternRegistry, BulkPermutationEqualsRandomPermutation) {
+  for (std::uint64_t n : {1u, 2u, 3u, 100u, 2048u, 2049u, 4097u, 70000u})
+    for (std::uint64_t key : {0ull, 1ull, 0x9e3779b97f4a7c15ull, ~0ull}) {
+      std::vector<std::uint32_t> bulk(n), reference(n);
+      registry_support::bulk_random_permutation(bulk.data(), n, key);
+      random_permutation(reference.data(), n, key);
+      ASSERT_EQ(bulk, reference) << "n " << n << " key " << key;
+    }
 }
 
 TEST(PatternRegistry, GridTakesStrataAndValidatesN) {

@@ -38,8 +38,10 @@ class LatinHypercube {
   /// holds count() entries.
   template <class Index>
   void permutation(unsigned dim, Index* cells) const noexcept {
-    random_permutation(cells, count_, hash64(seed_, 0x4e524f4f4b53ULL, dim));
+    random_permutation(cells, count_, permutation_key(dim));
   }
+  /// The key of dimension dim's permutation (random_permutation's `key`).
+  std::uint64_t permutation_key(unsigned dim) const noexcept { return hash64(seed_, 0x4e524f4f4b53ULL, dim); }
 
   /// Coordinate dim of point `index`, given its interval cell = π_dim(index).
   template <class Real = double>
