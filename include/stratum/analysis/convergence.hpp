@@ -158,9 +158,10 @@ SlopeFit fit_log_log(std::span<const double> x, std::span<const double> y);
 /// (for normal ones Var(log s²) is the trigamma ψ'((R − 1)/2); heavier tails
 /// widen it), which the residual standard error of fit_log_log, a measure of
 /// how straight the line is with m − 2 degrees of freedom, does not.
-/// Coverage: tests/analysis/convergence_test.cpp (200 seeds); estimates far
-/// from normal (a peaked integrand at small N) also bias log s², which no
-/// interval removes: docs/samplers.md gives the measured coverage.
+/// Coverage: tests/analysis/convergence_slope_interval_test.cpp (200
+/// seeds); estimates far from normal (a peaked integrand at small N) also
+/// bias log s², which no interval removes: docs/samplers.md gives the
+/// measured coverage.
 struct SlopeInterval {
   double slope = 0;           ///< the least-squares slope of log s² (as fit_log_log)
   double standard_error = 0;  ///< the jackknife standard error
