@@ -25,6 +25,7 @@ struct ConvergeOptions {
   std::optional<std::int64_t> d;
   std::uint64_t seed = 0;
   std::int64_t runs = 32, threads = 1;
+  double confidence = 0.95;  ///< level of the slopes' confidence intervals
   std::vector<std::string> integrand_params, params;  ///< --integrand-param; -p (every sampler's)
   std::string randomize;                              ///< --randomize (every sampler's)
   bool json = false;
@@ -48,6 +49,9 @@ nlohmann::json to_json(const sa::ConvergenceResult& result) {
     samplers.push_back({{"name", entry.sampler.name}, {"randomize", entry.sampler.randomize}, {"rows", rows},
                         {"fitted", entry.fitted}, {"slope", number(entry.slope.slope)},
                         {"slope_standard_error", number(entry.slope.slope_standard_error)},
+                        {"slope_interval", {number(entry.interval.low), number(entry.interval.high)}},
+                        {"slope_confidence", entry.interval.confidence},
+                        {"slope_sampling_standard_error", number(entry.interval.standard_error)},
                         {"intercept", number(entry.slope.intercept)}, {"skipped", skipped_json(entry)}});
   }
   return {{"integrand", result.integrand}, {"d", result.d}, {"exact", result.exact}, {"runs", result.runs},
@@ -75,6 +79,7 @@ void run_converge(const ConvergeOptions& o) {
   request.seed = o.seed;
   request.threads = static_cast<unsigned>(o.threads);
   request.skip_refused_counts = !o.counts_given;
+  request.confidence = o.confidence;
   const sa::ConvergenceResult result = sa::run_convergence(request);
   const nlohmann::json data = to_json(result);
   if (figure) plot::write_plot("converge", data, *figure);
@@ -82,8 +87,17 @@ void run_converge(const ConvergeOptions& o) {
   fmt::print("integrand {} (d = {}), exact {:.17g}, {} runs per N\n", result.integrand, result.d, result.exact,
              result.runs);
   for (const auto& entry : result.samplers) {
-    fmt::print("\n{}:{}  slope of log {} vs log N: {:.3f} ± {:.3f}\n", entry.sampler.name, entry.sampler.randomize,
-               entry.fitted, entry.slope.slope, entry.slope.slope_standard_error);
+    if (entry.fitted == "variance")
+      fmt::print("\n{}:{}  slope of log variance vs log N: {:.3f}, {:g}% interval [{:.3f}, {:.3f}] (jackknife SE {:.3f}; "
+                 "residual SE of the fit {:.3f})\n",
+                 entry.sampler.name, entry.sampler.randomize, entry.slope.slope, 100 * entry.interval.confidence,
+                 entry.interval.low, entry.interval.high, entry.interval.standard_error,
+                 entry.slope.slope_standard_error);
+    else
+      fmt::print("\n{}:{}  slope of log {} vs log N: {:.3f} ± {:.3f} (residual SE; the runs do not differ, so there "
+                 "is no sampling interval)\n",
+                 entry.sampler.name, entry.sampler.randomize, entry.fitted, entry.slope.slope,
+                 entry.slope.slope_standard_error);
     if (!entry.skipped.empty()) {
       std::string counts;
       for (const auto& skip : entry.skipped) counts += (counts.empty() ? "" : ",") + std::to_string(skip.n);
@@ -116,6 +130,10 @@ void add_converge_command(CLI::App& app) {
   command->add_option("--runs", o->runs, "independent randomizations per N")->capture_default_str();
   add_seed_option(*command, o->seed, "seed; run r of sampler s at N uses hash(seed, s, N, r)");
   add_threads_option(*command, o->threads, "threads (results do not depend on it)");
+  command->add_option("--confidence", o->confidence,
+                      "level of each slope's confidence interval, in (0, 1) (jackknife over the runs, Student-t: "
+                      "docs/samplers.md)")
+      ->capture_default_str();
   command->add_option("-p,--param", o->params, "sampler parameter KEY=VALUE for every sampler of --samplers (repeatable)");
   command->add_option("--randomize", o->randomize, "randomizer for every sampler of --samplers (or give NAME:RANDOMIZER)");
   command->add_option("--integrand-param", o->integrand_params, "integrand parameter KEY=V1,V2,... (repeatable)");

@@ -73,9 +73,10 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
 
 py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
                   const std::vector<std::string>& samplers, const std::vector<std::uint64_t>& counts, unsigned runs,
-                  std::uint64_t seed, unsigned threads, bool skip_refused_counts) {
+                  std::uint64_t seed, unsigned threads, bool skip_refused_counts, double confidence) {
   sa::ConvergenceRequest request;
   request.skip_refused_counts = skip_refused_counts;
+  request.confidence = confidence;
   request.integrand = {integrand, d, params};
   for (const auto& text : samplers) request.samplers.push_back(sa::parse_sampler_choice(text));
   request.counts = counts;
@@ -108,7 +109,10 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
         py::arg("variance") = to_array(variance), py::arg("seconds") = to_array(seconds),
         py::arg("efficiency") = to_array(efficiency), py::arg("fitted") = entry.fitted,
         py::arg("slope") = entry.slope.slope, py::arg("slope_standard_error") = entry.slope.slope_standard_error,
-        py::arg("intercept") = entry.slope.intercept);
+        py::arg("intercept") = entry.slope.intercept,
+        py::arg("slope_interval") = py::make_tuple(entry.interval.low, entry.interval.high),
+        py::arg("slope_confidence") = entry.interval.confidence,
+        py::arg("slope_sampling_standard_error") = entry.interval.standard_error);
   }
   py::array_t<std::uint64_t> n_array(static_cast<py::ssize_t>(counts.size()));
   std::copy(counts.begin(), counts.end(), n_array.mutable_data());
@@ -122,7 +126,8 @@ void bind_integrate_converge(py::module_& m) {
         py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"),
         py::arg("confidence"));
   m.def("converge", &converge, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("samplers"),
-        py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"));
+        py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"),
+        py::arg("confidence"));
   m.attr("default_counts") = sa::default_counts;
   m.def("parse_counts", [](const std::string& text) { return sa::parse_counts(text); });
 }

@@ -317,12 +317,12 @@ class Sobol(_Sequence):
             warnings.warn("The balance properties of Sobol' points require n to be a power of 2.", stacklevel=2)
         return super().random(n, workers=workers)
 
-    def _random(self, n=1, *, workers=1):
-        sample = self._draw(n, self.num_generated, workers)
-        # Keep `bits` binary digits, as scipy's bits-wide generator does; for
-        # LMS and Owen scrambling this is the same scramble on `bits` digits.
-        scale = float(2**self.bits)
-        return np.floor(sample * scale) / scale
+    def _draw(self, n, start, threads):
+        # Keep `bits` binary digits, as scipy's bits-wide generator does (the
+        # registry's bits parameter, done as the points are written); for LMS
+        # and Owen scrambling this is the same scramble on `bits` digits.
+        return _points(self._registry_name, n, self.d, seed=self._stratum_seed, randomize=self.randomize,
+                       start=start, threads=threads, bits=self.bits, **self._params)
 
     def random_base2(self, m):
         """Draw n = 2**m points; the total drawn so far must stay a power of 2."""
@@ -575,9 +575,17 @@ def discrepancy(sample, *, iterative=False, method="CD", workers=1):
     scipy does; ``iterative=True`` normalizes by n + 1 for update_discrepancy.
     The pair sums use stratum's kernels: O(N log N) (d = 2) or O(N log^2 N)
     (d = 3) for L2-star, vectorized O(d N^2) over ``workers`` threads otherwise;
-    the value does not depend on ``workers`` and agrees with scipy's to
-    rounding (about 1e-13 relative). Differences from scipy: NaN and Inf are
-    rejected (scipy returns nan), and messages name the first bad coordinate.
+    the value does not depend on ``workers``. Accuracy: each value is a small
+    difference of O(1) sums, and stratum accumulates in long double; against
+    a reference exact to 2e-16 (bench/qmc_discrepancy_accuracy.py: n = 256 to
+    4096, d = 2 and 5, random and scrambled Sobol' points) its error is at most
+    1e-15 absolute, 9e-13 relative for random points and 1.6e-9 for Sobol'
+    points (whose squared discrepancy is as small as 1e-7), while scipy's,
+    summed in double, grows with n: up to 1.3e-9 (random) and 2e-7 (Sobol')
+    relative at n = 1024, 3.3e-8 and 3.7e-6 at n = 4096: at n >= 1024 from 10x
+    to over 10^4x stratum's. The two therefore agree only to within scipy's
+    error; where they differ, stratum is the accurate one. Differences from
+    scipy: NaN and Inf are rejected (scipy returns nan), and messages name the first bad coordinate.
     For the discrepancy itself of every method (not squared) see
     ``stratum.measure``; docs/discrepancy.md.
     """

@@ -102,7 +102,7 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
 
 
 def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = None, seed: int = 0,
-             threads: int = 1, **params) -> dict:
+             threads: int = 1, confidence: float = 0.95, **params) -> dict:
     """Convergence study: for each sampler (a spec
     NAME[(KEY=VALUE,...)][:RANDOMIZER], docs/samplers.md; a list, or one string
     split on the commas outside parentheses) and each N, `runs` independent
@@ -118,8 +118,12 @@ def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = N
     it ran), skipped, numpy arrays mean_error, rmse, variance, seconds, efficiency
     (1 / (variance x seconds)), and the fitted log-log slope of variance vs N
     (slope, slope_standard_error, intercept; fitted says "variance", or "mse"
-    for a deterministic sampler). Numbers other than timings do not depend on
-    `threads`.
+    for a deterministic sampler). slope_interval (low, high) is the slope's
+    confidence interval at level `confidence` (slope_confidence), slope +- t x
+    slope_sampling_standard_error (t over the runs), the jackknife over runs
+    (NaN unless fitted is "variance" and runs >= 3); the residual
+    slope_standard_error only says how straight the line is. Numbers other
+    than timings do not depend on `threads`.
     """
     if isinstance(samplers, str):
         samplers = _stratum.split_spec_list(samplers)
@@ -136,8 +140,11 @@ def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = N
         counts = [_count("n", v, "must be positive integers") for v in values]
     runs = _small("runs", runs, "must be in [2, 1000000] (a variance needs 2 runs)", 2, 1000000)
     threads = _checks.threads(threads)
+    if isinstance(confidence, bool) or not isinstance(confidence, numbers.Real) or not 0 < confidence < 1:
+        raise InvalidArgument(f"invalid confidence = {confidence!r}: must be a level strictly between 0 and 1, "
+                              "e.g. 0.95")
     return _stratum.converge(integrand, _dimension(d), _integrand_params(params), samplers, counts, runs, _seed(seed),
-                             threads, skip_refused)
+                             threads, skip_refused, float(confidence))
 
 
 # ============================================================================

@@ -156,3 +156,24 @@ def test_bad_input(call, word):
     with pytest.raises(stratum.InvalidArgument, match=None) as info:
         call()
     assert word in str(info.value)
+
+
+def test_converge_slope_interval():
+    """The slope's interval: the jackknife over runs, t_{R-1} (coverage over
+    200 seeds is tested in C++); it holds the true rate -1 of random sampling
+    here, where the residual standard error (0.078) is no interval."""
+    from scipy import stats
+    r = stratum.converge("genz-gaussian", "random", "64:16384:4", runs=32, d=4, seed=1)["samplers"]["random:none"]
+    low, high = r["slope_interval"]
+    assert low <= -1 <= high and r["slope_confidence"] == 0.95
+    t = stats.t.ppf(0.975, 31)
+    assert high - r["slope"] == pytest.approx(t * r["slope_sampling_standard_error"], rel=1e-9)
+    assert r["slope"] - low == pytest.approx(t * r["slope_sampling_standard_error"], rel=1e-9)
+    narrow = stratum.converge("genz-gaussian", "random", "64:16384:4", runs=32, d=4, seed=1, confidence=0.5)
+    lo50, hi50 = narrow["samplers"]["random:none"]["slope_interval"]
+    assert (hi50 - lo50) / (high - low) == pytest.approx(stats.t.ppf(0.75, 31) / t, rel=1e-8)  # scipy t.ppf: ~1e-9
+    fixed = stratum.converge("gaussian", "halton:none", [64, 256], runs=3)["samplers"]["halton:none"]
+    assert fixed["fitted"] == "mse" and all(math.isnan(v) for v in fixed["slope_interval"])
+    for level in (0, 1, True, "0.9"):
+        with pytest.raises(stratum.InvalidArgument, match="confidence"):
+            stratum.converge("gaussian", "random", [16, 64], runs=4, confidence=level)

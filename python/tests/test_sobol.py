@@ -9,6 +9,9 @@ are identical, not merely close. Past 2^32 scipy 1.10 cannot follow
 (fast_forward fails for bits > 32); the C++ tests compare with
 boost::random::sobol there.
 """
+import pathlib
+import subprocess
+import sys
 import warnings
 
 import numpy as np
@@ -32,7 +35,10 @@ def scipy_sobol(d, n, skip=0, bits=None):
 def test_registry_entries():
     info = {s["name"]: s for s in stratum.samplers()}
     assert info["sobol"]["randomizers"] == RANDOMIZERS
-    assert (info["sobol"]["min_dim"], info["sobol"]["max_dim"]) == (1, 3667)
+    assert (info["sobol"]["min_dim"], info["sobol"]["max_dim"]) == (1, 21201)
+    assert qmc.Sobol.MAXDIM == 21201  # scipy's own
+    from stratum import qmc as stratum_qmc
+    assert stratum_qmc.Sobol.MAXDIM == 21201
     assert info["zero-two"]["randomizers"] == ["owen-hash", "none", "owen", "xor", "lms"]
     assert (info["zero-two"]["min_dim"], info["zero-two"]["max_dim"]) == (2, 2)
 
@@ -50,13 +56,33 @@ def test_unscrambled_equals_scipy_exactly():
 
 
 def test_all_joe_kuo_dimensions_equal_scipy():
-    ours = stratum.points("sobol", 64, 3667, randomize="none")
-    assert np.array_equal(ours, scipy_sobol(3667, 64))
+    # All 21201 dimensions: the first 3667 are Boost's table (compared bit
+    # for bit in the C++ tests), the 17534 beyond come from scipy's copy.
+    ours = stratum.points("sobol", 64, 21201, randomize="none")
+    assert np.array_equal(ours, scipy_sobol(21201, 64))
+    # Deeper columns, where the initial numbers m_7..m_18 and then the
+    # polynomial's recursion enter: in natural order point 2^c is column c of
+    # every generator matrix; scipy's engine keeps its columns, 64 bits wide
+    # with bits=64, in _sv (its fast_forward to 2^18 would take 10 s here).
+    columns = qmc.Sobol(21201, scramble=False, bits=64)._sv
+    for c in (6, 10, 13, 15, 17, 18, 25, 31, 52, 63):
+        ours = stratum.points("sobol", 1, 21201, randomize="none", order="natural", start=2**c)[0]
+        assert np.array_equal(ours, (columns[:, c] >> np.uint64(11)).astype(np.float64) * 2.0**-53), c
+
+
+def test_generated_table_is_what_its_generator_writes(tmp_path):
+    """include/stratum/sequences/sobol_joe_kuo_table.hpp is regenerated from
+    scipy's direction numbers, byte for byte."""
+    root = pathlib.Path(__file__).resolve().parents[2]
+    out = tmp_path / "table.hpp"
+    subprocess.run([sys.executable, str(root / "scripts/generate_sobol_table.py"), "-o", str(out)], check=True,
+                   capture_output=True)
+    assert out.read_bytes() == (root / "include/stratum/sequences/sobol_joe_kuo_table.hpp").read_bytes()
 
 
 def test_too_many_dimensions_is_an_error():
-    with pytest.raises(stratum.InvalidArgument, match="d = 3668"):
-        stratum.points("sobol", 16, 3668)
+    with pytest.raises(stratum.InvalidArgument, match="d = 21202"):
+        stratum.points("sobol", 16, 21202)
     with pytest.raises(stratum.InvalidArgument, match="d = 3"):
         stratum.points("zero-two", 16, 3)
     with pytest.raises(stratum.InvalidArgument, match="order"):
@@ -125,3 +151,21 @@ def test_any_start_and_thread_count_give_the_same_rows(randomize, d):
     for start in [1, 333, 777] + ([4096] if d < 300 else []):
         part = stratum.points("sobol", n - start, d, seed=4, randomize=randomize, start=start, threads=2)
         assert np.array_equal(part, whole[start:]), start
+
+
+def test_bits_parameter_keeps_the_first_digits():
+    """bits=b (scipy's Sobol bits, done in the generator): floor(x 2^b) / 2^b
+    of the full points, for every randomizer; qmc.Sobol(bits=b) uses it."""
+    for randomize in RANDOMIZERS:
+        full = stratum.points("sobol", 512, 5, seed=3, randomize=randomize)
+        kept = stratum.points("sobol", 512, 5, seed=3, randomize=randomize, bits=9)
+        assert np.array_equal(kept, np.floor(full * 2**9) / 2**9), randomize
+    from stratum import qmc as stratum_qmc
+    engine = stratum_qmc.Sobol(4, bits=12, seed=7)
+    sample = engine.random(1024)
+    raw = stratum.points("sobol", 1024, 4, seed=engine.stratum_seed, randomize="lms")
+    assert np.array_equal(sample, np.floor(raw * 2**12) / 2**12)
+    assert np.array_equal(stratum_qmc.Sobol(6, scramble=False, bits=10).random(1024), scipy_sobol(6, 1024, bits=10))
+    for bad in (0, 65):
+        with pytest.raises(stratum.InvalidArgument, match=f"bits = {bad}"):
+            stratum.points("sobol", 4, 2, bits=bad)

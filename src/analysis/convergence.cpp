@@ -163,6 +163,69 @@ SlopeFit fit_log_log(std::span<const double> x, std::span<const double> y) {
   return fit;
 }
 
+SlopeInterval slope_interval(std::span<const double> x, std::span<const double> estimates, unsigned runs,
+                             double confidence) {
+  require(runs >= 3, "runs", runs, "must be at least 3 (a variance with one run left out needs 2)");
+  require(estimates.size() == x.size() * runs, "estimates", estimates.size(),
+          "needs runs = " + std::to_string(runs) + " values per count (" + std::to_string(x.size()) + " counts)");
+  require(confidence > 0 && confidence < 1, "confidence", confidence,
+          "must be a level strictly between 0 and 1, e.g. 0.95");
+  const std::size_t m = x.size();
+  double mean_x = 0, sxx = 0;
+  for (double value : x) mean_x += std::log(value) / static_cast<double>(m);
+  for (double value : x) sxx += (std::log(value) - mean_x) * (std::log(value) - mean_x);
+  require(sxx > 0, "x", "(all equal)", "needs at least 2 distinct counts");
+  // Per count: mean and sum of squared deviations, then the slope's weights.
+  const double r = runs;
+  std::vector<double> mean(m, 0.0), squares(m, 0.0), weight(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const double* cell = estimates.data() + k * runs;
+    for (unsigned i = 0; i < runs; ++i) mean[k] += cell[i] / r;
+    for (unsigned i = 0; i < runs; ++i) squares[k] += (cell[i] - mean[k]) * (cell[i] - mean[k]);
+    weight[k] = (std::log(x[k]) - mean_x) / sxx;
+  }
+  auto log_variance = [&](double sum_of_squares, double count) {
+    require(sum_of_squares > 0, "estimates", "(no spread)", "every count needs runs that differ, also with one left out");
+    return std::log(sum_of_squares / (count - 1));
+  };
+  SlopeInterval interval;
+  for (std::size_t k = 0; k < m; ++k) interval.slope += weight[k] * log_variance(squares[k], r);
+  // Leaving run i out of count k: Σ (x − mean')² = squares − (x_i − mean)² · R / (R − 1).
+  std::vector<double> left_out(runs, 0.0);
+  for (std::size_t k = 0; k < m; ++k) {
+    const double* cell = estimates.data() + k * runs;
+    for (unsigned i = 0; i < runs; ++i) {
+      const double deviation = cell[i] - mean[k];
+      const double rest = std::max(squares[k] - deviation * deviation * r / (r - 1), 0.0);
+      left_out[i] += weight[k] * log_variance(rest, r - 1);
+    }
+  }
+  double left_out_mean = 0, spread = 0;
+  for (double s : left_out) left_out_mean += s / r;
+  for (double s : left_out) spread += (s - left_out_mean) * (s - left_out_mean);
+  interval.standard_error = std::sqrt((r - 1) / r * spread);
+  interval.confidence = confidence;
+  const double t = boost::math::quantile(boost::math::students_t(r - 1), (1 + confidence) / 2);
+  interval.low = interval.slope - t * interval.standard_error;
+  interval.high = interval.slope + t * interval.standard_error;
+  return interval;
+}
+
+namespace {
+/// slope_interval, or NaN bounds where it cannot be formed: R = 2 runs, or
+/// a count whose runs agree once one is left out.
+SlopeInterval interval_or_nan(std::span<const double> x, std::span<const double> estimates, unsigned runs,
+                              double confidence) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  try {
+    if (runs >= 3) return slope_interval(x, estimates, runs, confidence);
+  } catch (const invalid_argument& error) {
+    if (error.argument() != "estimates") throw;
+  }
+  return {nan, nan, confidence, nan, nan};
+}
+}  // namespace
+
 IntegrationResult integrate(const IntegrationRequest& request) {
   const auto integrand = make_integrand(request.integrand.name, request.integrand.d, request.integrand.params);
   const auto d = static_cast<unsigned>(integrand->dimension());
@@ -250,6 +313,8 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   require(request.runs >= 2 && request.runs <= max_runs, "runs", request.runs,
           "must be in [2, 1000000] (a variance needs at least 2 runs)");
   require(request.threads >= 1 && request.threads <= max_threads, "threads", request.threads, "must be in [1, 1024]");
+  require(request.confidence > 0 && request.confidence < 1, "confidence", request.confidence,
+          "must be a level strictly between 0 and 1, e.g. 0.95");
   for (std::size_t k = 0; k < request.counts.size(); ++k) {
     require(request.counts[k] >= 1, "n", request.counts[k], "must be a positive integer");
     if (k > 0) require(request.counts[k] > request.counts[k - 1], "n", request.counts[k], "N values must increase");
@@ -322,7 +387,7 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
 
   for (std::size_t s = 0; s < result.samplers.size(); ++s) {
     auto& entry = result.samplers[s];
-    std::vector<double> x, variances, mses;
+    std::vector<double> x, variances, mses, estimates;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       if (cells[c].sampler != s) continue;
       estimators::RunningStats spread, time;
@@ -341,6 +406,7 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
       row.rmse = std::sqrt(squared_error_sum / request.runs);
       row.variance = spread.variance();
       row.seconds = std::max(time.mean(), 1e-9);  // a clock tick at least: efficiency stays finite
+      for (std::size_t r = 0; r < request.runs; ++r) estimates.push_back(estimate_of(c * request.runs + r));
       row.efficiency = estimators::efficiency(row.variance, row.seconds);
       entry.rows.push_back(row);
       x.push_back(static_cast<double>(row.n));
@@ -355,10 +421,16 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
     if (x.size() >= 2 && all_positive(variances)) {
       entry.slope = fit_log_log(x, variances);
       entry.fitted = "variance";
+      entry.interval = interval_or_nan(x, estimates, request.runs, request.confidence);
     } else if (x.size() >= 2 && all_positive(mses)) {
       entry.slope = fit_log_log(x, mses);
       entry.fitted = "mse";
-    } else {
+    }
+    if (entry.fitted != "variance") {
+      constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+      entry.interval = {nan, nan, request.confidence, nan, nan};
+    }
+    if (entry.fitted.empty()) {
       entry.slope.slope = entry.slope.slope_standard_error = entry.slope.intercept =
           std::numeric_limits<double>::quiet_NaN();
       entry.fitted = "none";

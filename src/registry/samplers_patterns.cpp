@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "bulk_permutation.hpp"
 #include "families.hpp"
 #include "stratum/patterns/grid.hpp"
 #include "stratum/patterns/jittered.hpp"
@@ -103,17 +104,41 @@ static PointSet fill_with_randomizer(const SamplerRequest& request, const Patter
                                 [&](std::uint64_t i, unsigned j) { return pattern.sample(i, j); });
 }
 
+/// Dimensions in blocks of 8: their permutations (32-bit cells when n fits),
+/// then the rows, so the writes are whole cache lines and each row's hash
+/// is shared by the block's coordinates (the points of LatinHypercube::generate).
+template <class Index>
+static void fill_latin_hypercube(const LatinHypercube& lhs, const SamplerRequest& request, double* out) {
+  constexpr unsigned block = 8;
+  const std::uint64_t n = *request.n;
+  const unsigned d = request.d;
+  std::vector<Index> cells(std::size_t{std::min(block, d)} * n);
+  for (unsigned first = 0; first < d; first += block) {
+    const unsigned width = std::min(block, d - first);
+    for (unsigned b = 0; b < width; ++b) {
+      Index* column = cells.data() + std::size_t{b} * n;
+      if constexpr (sizeof(Index) == sizeof(std::uint32_t))
+        bulk_random_permutation(column, n, lhs.permutation_key(first + b));
+      else
+        lhs.permutation(first + b, column);
+    }
+    parallel_rows(n, request.threads, [&](std::uint64_t begin, std::uint64_t end) {
+      for (std::uint64_t i = begin; i < end; ++i) {
+        const std::uint64_t key = lhs.row_key(i);
+        double* row = out + i * d + first;
+        for (unsigned b = 0; b < width; ++b) row[b] = lhs.coordinate_in_row(cells[std::size_t{b} * n + i], key, first + b);
+      }
+    });
+  }
+}
+
 static PointSet generate_latin_hypercube(const SamplerRequest& request) {
   const LatinHypercube lhs(*request.n, request.d, request.seed, request.values.flag("centered"));
   PointSet points = allocate_points(*request.n, request.d);
-  std::vector<std::uint64_t> cells(*request.n);
-  double* out = points.data.get();
-  for (unsigned j = 0; j < request.d; ++j) {
-    lhs.permutation(j, cells.data());
-    parallel_rows(*request.n, request.threads, [&](std::uint64_t begin, std::uint64_t end) {
-      for (std::uint64_t i = begin; i < end; ++i) out[i * request.d + j] = lhs.coordinate(cells[i], i, j);
-    });
-  }
+  if (*request.n <= (std::uint64_t{1} << 32))
+    fill_latin_hypercube<std::uint32_t>(lhs, request, points.data.get());
+  else
+    fill_latin_hypercube<std::uint64_t>(lhs, request, points.data.get());
   return points;
 }
 

@@ -10,8 +10,12 @@
 /// the columns themselves are scrambled), hash-based Owen scrambling works
 /// on the bit-reversed words, and the result equals
 /// Sobol::sample(index, dim, randomizer) bit for bit (tests/sequences/sobol_test.cpp).
+/// The `bits` parameter keeps the first b digits of every coordinate (scipy's
+/// Sobol(bits=b): floor(x 2^b) / 2^b); for the linear randomizers it masks
+/// the columns and the shift, so it costs nothing.
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -37,6 +41,12 @@ namespace {
 
 Sobol::Order parse_order(const SamplerRequest& request) {
   return request.values.text("order") == "natural" ? Sobol::Order::natural : Sobol::Order::gray;
+}
+
+/// The `bits` parameter (1..64) as the mask of the digits it keeps.
+std::uint64_t parse_digit_mask(const SamplerRequest& request) {
+  const std::int64_t bits = request.values.integer("bits");
+  return bits == 64 ? ~std::uint64_t{0} : ~std::uint64_t{0} << (64 - bits);
 }
 
 /// The generator matrices of the first d Sobol' dimensions in the walk's
@@ -118,15 +128,17 @@ struct Finish {
   const std::uint64_t* multiplier = nullptr;           // owen_hash
   const double* shift = nullptr;                       // rotate: Cranley-Patterson shifts
   const OwenScrambler::Dimension* owen_dims = nullptr;  // owen (exact)
+  std::uint64_t mask = ~std::uint64_t{0};              // digits kept (bits); plain: in the columns already
+  double truncation = 0;                               // rotate with bits < 53: 2^bits, else 0
 
   /// The output for state x of tile entry t.
   double operator()(std::uint64_t x, std::size_t t) const noexcept {
     switch (kind) {
       case plain: return bits_to_double(x);
       case owen_hash:
-        return bits_to_double(reverse_bits64(HashOwenScrambler::scramble_reversed(x, addend[t], multiplier[t])));
-      case rotate: return rotated(x, shift[t]);
-      case owen: return bits_to_double(owen_dims[t](x));
+        return bits_to_double(reverse_bits64(HashOwenScrambler::scramble_reversed(x, addend[t], multiplier[t])) & mask);
+      case rotate: return truncated(rotated(x, shift[t]));
+      case owen: return bits_to_double(owen_dims[t](x) & mask);
     }
     return 0;
   }
@@ -137,6 +149,8 @@ struct Finish {
     const double wrapped = sum >= 1.0 ? sum - 1.0 : sum;
     return wrapped < one_minus_epsilon_double ? wrapped : one_minus_epsilon_double;
   }
+  /// floor(v 2^b) / 2^b, exact (powers of two), when bits < 53.
+  double truncated(double v) const noexcept { return truncation == 0 ? v : std::floor(v * truncation) / truncation; }
 };
 
 /// out[g + t] = finish(tile[t] ⊕ low[g + t], t) for g = 0, span, .., words − span.
@@ -151,14 +165,21 @@ void finish_groups(const Finish& finish, const std::uint64_t* __restrict tile, c
     case Finish::owen_hash: {
       const std::uint64_t* __restrict addend = finish.addend;
       const std::uint64_t* __restrict multiplier = finish.multiplier;
+      const std::uint64_t mask = finish.mask;
       for (std::size_t g = 0; g < words; g += span)
         for (std::size_t t = 0; t < span; ++t)
           out[g + t] = bits_to_double(
-              reverse_bits64(HashOwenScrambler::scramble_reversed(tile[t] ^ low[g + t], addend[t], multiplier[t])));
+              reverse_bits64(HashOwenScrambler::scramble_reversed(tile[t] ^ low[g + t], addend[t], multiplier[t])) &
+              mask);
       break;
     }
     case Finish::rotate: {
       const double* __restrict shift = finish.shift;
+      if (finish.truncation != 0) {
+        for (std::size_t g = 0; g < words; g += span)
+          for (std::size_t t = 0; t < span; ++t) out[g + t] = finish(tile[t] ^ low[g + t], t);
+        break;
+      }
       for (std::size_t g = 0; g < words; g += span)
         for (std::size_t t = 0; t < span; ++t) out[g + t] = Finish::rotated(tile[t] ^ low[g + t], shift[t]);
       break;
@@ -192,6 +213,7 @@ __attribute__((target("avx512f,avx512dq,avx512bw,gfni"))) void owen_hash_groups_
   const long long high = 0x08090a0b0c0d0e0fLL, low_bytes = 0x0001020304050607LL;
   const __m512i reverse_bytes = _mm512_set_epi64(high, low_bytes, high, low_bytes, high, low_bytes, high, low_bytes);
   const __m512d unit = _mm512_set1_pd(0x1.0p-53);
+  const __m512i mask = _mm512_set1_epi64(static_cast<long long>(finish.mask));
   const std::uint64_t* __restrict addend = finish.addend;
   const std::uint64_t* __restrict multiplier = finish.multiplier;
   const std::size_t vector_span = span / 8 * 8;
@@ -203,7 +225,8 @@ __attribute__((target("avx512f,avx512dq,avx512bw,gfni"))) void owen_hash_groups_
       r = _mm512_mullo_epi64(r, _mm512_loadu_si512(multiplier + t));
       r = _mm512_xor_si512(r, _mm512_mullo_epi64(r, k2));
       r = _mm512_xor_si512(r, _mm512_mullo_epi64(r, k3));
-      r = _mm512_shuffle_epi8(_mm512_gf2p8affine_epi64_epi8(r, reverse_byte_bits, 0), reverse_bytes);
+      r = _mm512_and_si512(_mm512_shuffle_epi8(_mm512_gf2p8affine_epi64_epi8(r, reverse_byte_bits, 0), reverse_bytes),
+                           mask);
       // (The maskz shift: the plain one trips GCC 12's -Wuninitialized.)
       _mm512_storeu_pd(out + g + t, _mm512_mul_pd(_mm512_cvtepi64_pd(_mm512_maskz_srli_epi64(0xff, r, 11)), unit));
     }
@@ -313,14 +336,16 @@ PointSet generate_sobol(const SamplerRequest& request) {
   const Sobol::Order order = parse_order(request);
   const Layout layout = layout_for(d);
   const std::string& randomize = request.randomize;
-  const auto identity = [](unsigned, std::uint64_t word) { return word; };
+  const std::uint64_t mask = parse_digit_mask(request);
+  // Keeping the first b digits is linear: masked columns and shift (plain finish).
+  const auto identity = [mask](unsigned, std::uint64_t word) { return word & mask; };
   const std::vector<std::uint64_t> zeros(d, 0);
 
   if (randomize == "none") return walk(request, order, transformed_columns(d, identity), zeros, Finish{}, layout);
   if (randomize == "xor") {  // the shift commutes with the walk: start from it
     const DigitalShift shift(request.seed);
     std::vector<std::uint64_t> offsets(d);
-    for (unsigned j = 0; j < d; ++j) offsets[j] = shift.shift(j);
+    for (unsigned j = 0; j < d; ++j) offsets[j] = shift.shift(j) & mask;
     return walk(request, order, transformed_columns(d, identity), offsets, Finish{}, layout);
   }
   if (randomize == "lms") {  // L is linear: walk with scrambled columns from the shift
@@ -329,9 +354,10 @@ PointSet generate_sobol(const SamplerRequest& request) {
     std::vector<std::uint64_t> offsets(d);
     for (unsigned j = 0; j < d; ++j) {
       dims.push_back(lms.dimension(j));
-      offsets[j] = dims[j].shift();
+      offsets[j] = dims[j].shift() & mask;
     }
-    const auto columns = transformed_columns(d, [&](unsigned j, std::uint64_t word) { return dims[j].linear(word); });
+    const auto columns =
+        transformed_columns(d, [&](unsigned j, std::uint64_t word) { return dims[j].linear(word) & mask; });
     return walk(request, order, columns, offsets, Finish{}, layout);
   }
   if (randomize == "owen-hash") {  // walk the bit-reversed words, scramble, reverse once
@@ -344,7 +370,8 @@ PointSet generate_sobol(const SamplerRequest& request) {
     const auto addend_tiles = tiled(addends, layout.span), multiplier_tiles = tiled(multipliers, layout.span);
     const auto reversed = [](unsigned, std::uint64_t word) { return reverse_bits64(word); };
     return walk(request, order, transformed_columns(d, reversed), zeros,
-                Finish{.kind = Finish::owen_hash, .addend = addend_tiles.data(), .multiplier = multiplier_tiles.data()},
+                Finish{.kind = Finish::owen_hash, .addend = addend_tiles.data(), .multiplier = multiplier_tiles.data(),
+                       .mask = mask},
                 layout);
   }
   if (randomize == "cp") {
@@ -352,16 +379,20 @@ PointSet generate_sobol(const SamplerRequest& request) {
     std::vector<double> shifts(d);
     for (unsigned j = 0; j < d; ++j) shifts[j] = rotation.shift(j);
     const auto tiles = tiled(shifts, layout.span);
-    return walk(request, order, transformed_columns(d, identity), zeros,
-                Finish{.kind = Finish::rotate, .shift = tiles.data()}, layout);
+    const int bits = 64 - std::countr_zero(mask);
+    const auto unmasked = [](unsigned, std::uint64_t word) { return word; };
+    return walk(request, order, transformed_columns(d, unmasked), zeros,
+                Finish{.kind = Finish::rotate, .shift = tiles.data(), .truncation = bits < 53 ? std::ldexp(1.0, bits) : 0},
+                layout);
   }
   if (randomize == "owen") {  // 64 hashes per coordinate: scalar
     const OwenScrambler owen(request.seed);
     std::vector<OwenScrambler::Dimension> dims;
     for (unsigned j = 0; j < d; ++j) dims.push_back(owen.dimension(j));
     const auto tiles = tiled(dims, layout.span);
-    return walk(request, order, transformed_columns(d, identity), zeros,
-                Finish{.kind = Finish::owen, .owen_dims = tiles.data()}, layout);
+    const auto unmasked = [](unsigned, std::uint64_t word) { return word; };
+    return walk(request, order, transformed_columns(d, unmasked), zeros,
+                Finish{.kind = Finish::owen, .owen_dims = tiles.data(), .mask = mask}, layout);
   }
   throw invalid_argument("randomize", randomize, "unknown to the Sobol generator");
 }
@@ -369,6 +400,12 @@ PointSet generate_sobol(const SamplerRequest& request) {
 const Param order_param = params::choice(
     "order", "point order: gray (Gray code, as Boost.Random and scipy) or natural (index bits, as pbrt-v4)", "gray",
     {"gray", "natural"});
+
+const Param bits_param = params::integer(
+    "bits",
+    "binary digits kept of every coordinate: floor(x 2^bits) / 2^bits after the randomizer (scipy's Sobol bits; 64 "
+    "and anything above 53 keep every digit of a double)",
+    "64", closed(1, 64));
 
 /// zsobol's image (resolution) and pixel from the request; the points are
 /// the pixel's n = spp samples.
@@ -412,7 +449,7 @@ std::vector<SamplerInfo> sobol() {
                      "(0,2)-sequence in dims 0-1", "powers of two give (t,m,s)-nets", "64-bit indices and digits"},
       .randomizers = {"owen-hash", "none", "owen", "xor", "lms", "cp"},
       .counts = "any n >= 1 (powers of two give (t,m,s)-nets)",
-      .params = {order_param},
+      .params = {order_param, bits_param},
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_sobol,
@@ -448,7 +485,7 @@ std::vector<SamplerInfo> sobol() {
       .properties = {"index-addressable", "progressive", "(0,2)-sequence", "(0,m,2)-net at every power of two"},
       .randomizers = {"owen-hash", "none", "owen", "xor", "lms"},
       .counts = "any n >= 1 (powers of two give (0,m,2)-nets)",
-      .params = {order_param},
+      .params = {order_param, bits_param},
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_sobol,

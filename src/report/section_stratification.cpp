@@ -53,10 +53,16 @@ double fitted_value(const sa::SamplerConvergence& entry, const sa::ConvergenceRo
 
 nlohmann::json finite(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
-std::string slope_text(const sa::SlopeFit& fit) {
+/// The slope with its confidence interval (the jackknife over runs), or with
+/// the fit's residual standard error when there is none (deterministic runs).
+std::string slope_text(const sa::SamplerConvergence& entry) {
+  const sa::SlopeFit& fit = entry.slope;
   if (!std::isfinite(fit.slope)) return "n/a";
+  if (std::isfinite(entry.interval.low))
+    return format_number(fit.slope) + " (" + format_number(100 * entry.interval.confidence) + "% interval " +
+           format_number(entry.interval.low, 2) + " … " + format_number(entry.interval.high, 2) + ")";
   if (!std::isfinite(fit.slope_standard_error)) return format_number(fit.slope);
-  return format_number(fit.slope) + " ± " + format_number(fit.slope_standard_error, 2);
+  return format_number(fit.slope) + " ± " + format_number(fit.slope_standard_error, 2) + " (fit)";
 }
 
 const sa::SamplerConvergence& entry_of(const sa::ConvergenceResult& result, const std::string& name) {
@@ -74,7 +80,7 @@ nlohmann::json panel(const sa::ConvergenceResult& result, const std::string& tit
     std::vector<double> x, y;
     for (const auto& row : entry.rows)
       if (fitted_value(entry, row) > 0) x.push_back(static_cast<double>(row.n)), y.push_back(fitted_value(entry, row));
-    series.push_back({{"label", fmt::format("{} ({}{})", sampler_name(entry.sampler), slope_text(entry.slope),
+    series.push_back({{"label", fmt::format("{} ({}{})", sampler_name(entry.sampler), slope_text(entry),
                                             entry.fitted == "mse" ? ", MSE" : "")},
                       {"x", x},
                       {"y", y}});
@@ -102,6 +108,7 @@ nlohmann::json to_numbers(const sa::ConvergenceResult& result) {
       rows.push_back({{"n", row.n}, {"variance", row.variance}, {"rmse", row.rmse}, {"mean_error", row.mean_error}});
     samplers[label(entry.sampler)] = {{"slope", finite(entry.slope.slope)},
                                       {"slope_standard_error", finite(entry.slope.slope_standard_error)},
+                                      {"slope_interval", {finite(entry.interval.low), finite(entry.interval.high)}},
                                       {"fitted", entry.fitted},
                                       {"rows", rows}};
   }
@@ -142,7 +149,7 @@ Section stratification_section(SectionContext& context) {
   request.integrand.name = "gaussian";
   const sa::ConvergenceResult smooth = sa::run_convergence(request);
 
-  Table table{fmt::format("Fitted slopes of log variance against log N (± standard error), N = {} … {}, {} runs per N",
+  Table table{fmt::format("Fitted slopes of log variance against log N (95% interval: jackknife over runs), N = {} … {}, {} runs per N",
                           counts.front(), counts.back(), runs),
               {"sampler", "edge (step) slope", "smooth (gaussian) slope", "edge variance at N = " +
                                                                                std::to_string(counts.back()),
@@ -151,8 +158,8 @@ Section stratification_section(SectionContext& context) {
   for (std::size_t s = 0; s < samplers.size(); ++s) {
     const auto& e = edge.samplers[s];
     const auto& g = smooth.samplers[s];
-    table.rows.push_back({named_with_spec(e.sampler), slope_text(e.slope) + (e.fitted == "mse" ? " (MSE)" : ""),
-                          slope_text(g.slope) + (g.fitted == "mse" ? " (MSE)" : ""),
+    table.rows.push_back({named_with_spec(e.sampler), slope_text(e) + (e.fitted == "mse" ? " (MSE)" : ""),
+                          slope_text(g) + (g.fitted == "mse" ? " (MSE)" : ""),
                           format_number(fitted_value(e, e.rows.back())),
                           format_number(fitted_value(g, g.rows.back()))});
   }
@@ -168,19 +175,19 @@ Section stratification_section(SectionContext& context) {
       "On the edge integrand 1[x < 1/π], the variance of jittered estimates falls with a fitted slope of {} "
       "(the lecture predicts −1.5: only the √N strata the edge crosses contribute) and that of random estimates "
       "with {} (predicted −1); at N = {} random's variance is {}× jittered's.",
-      slope_text(jittered_edge.slope), slope_text(random_edge.slope), counts.back(),
+      slope_text(jittered_edge), slope_text(random_edge), counts.back(),
       format_number(random_edge.rows.back().variance / jittered_edge.rows.back().variance)));
   const auto& sobol_edge = entry_of(edge, "sobol");
   const auto& pmj_edge = entry_of(edge, "pmj02");
   section.text.push_back(fmt::format(
       "This edge is parallel to an axis, and the (0,2)-sequences stratify x into N intervals: Owen-scrambled "
       "Sobol' reaches {} and PMJ02 {} on it.",
-      slope_text(sobol_edge.slope), slope_text(pmj_edge.slope)));
+      slope_text(sobol_edge), slope_text(pmj_edge)));
   section.text.push_back(fmt::format(
       "On the smooth Gaussian exp(−x² − y²) the slopes are {} for random, {} for jittered (theory −2), {} for "
       "Owen-scrambled Sobol' and {} for PMJ02 (theory −3 for scrambled nets).",
-      slope_text(entry_of(smooth, "random").slope), slope_text(entry_of(smooth, "jittered").slope),
-      slope_text(entry_of(smooth, "sobol").slope), slope_text(entry_of(smooth, "pmj02").slope)));
+      slope_text(entry_of(smooth, "random")), slope_text(entry_of(smooth, "jittered")),
+      slope_text(entry_of(smooth, "sobol")), slope_text(entry_of(smooth, "pmj02"))));
   if (!skipped.empty()) {
     std::string names;
     for (const auto& name : skipped_names) names += (names.empty() ? "" : ", ") + name;

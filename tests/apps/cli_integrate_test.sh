@@ -56,7 +56,15 @@ for s, t in zip(a['samplers'], b['samplers']):
     assert [r['n'] for r in s['rows']] == [16, 64, 256, 1024, 4096]
 r, j = a['samplers']
 assert abs(r['slope'] + 1) < 4 * max(r['slope_standard_error'], 0.05), r['slope']
-assert abs(j['slope'] + 2) < 4 * max(j['slope_standard_error'], 0.05), j['slope']" && ok || fail "converge values"
+assert abs(j['slope'] + 2) < 4 * max(j['slope_standard_error'], 0.05), j['slope']
+lo, hi = r['slope_interval']
+assert lo < r['slope'] < hi and r['slope_confidence'] == 0.95 and r['slope_sampling_standard_error'] > 0
+assert lo <= -1 <= hi, (lo, hi)  # the jackknife interval holds the true rate (seed 0)" && ok || fail "converge values"
+"$stratum" converge --integrand genz-gaussian -d 4 --samplers random --n 64:16384:4 --runs 32 --seed 1 --confidence 0.9 \
+  >"$tmp/out" && ok || fail "converge --confidence"
+grep -q '^random:none  slope of log variance vs log N: -0.987, 90% interval \[-1.1[0-9][0-9], -0.8[0-9][0-9]\]' "$tmp/out" \
+  && ok || fail "converge prints the interval: $(sed -n 3p "$tmp/out")"
+expect_error "invalid confidence = 1" converge --integrand gaussian --samplers random --n 16,64 --runs 4 --confidence 1
 "$stratum" converge --integrand bilinear --samplers sobol:owen-hash,random --n 64,256,1024 --runs 8 --plot "$tmp/c.png" >"$tmp/out" && ok || fail "converge --plot"
 $py -c "import sys; sys.exit(open('$tmp/c.png','rb').read(8) != b'\x89PNG\r\n\x1a\n')" && ok || fail "plot is a PNG"
 grep -q 'sobol:owen-hash  slope' "$tmp/out" && ok || fail "table names the sampler and its slope"

@@ -52,6 +52,13 @@ expect_error "invalid d = 2000" points --sampler halton -n 4 -d 2000
 expect_error "memory" points --sampler random -n 1000000000000000 -d 3
 expect_error "format" points --sampler halton -n 4 --format xls
 expect_error "randomize" points --sampler halton -n 4 --randomize shuffle
+# sobol's bits (scipy's Sobol bits): two digits of the LMS-scrambled points, from a spec or -p.
+kept=$("$stratum" points -s 'sobol(bits=2):lms' -n 16 -d 3 --seed 4)
+[ "$kept" = "$("$stratum" points -s sobol:lms -p bits=2 -n 16 -d 3 --seed 4)" ] && ok || fail "bits by spec and -p differ"
+echo "$kept" | awk '{ for (i = 1; i <= NF; ++i) if ($i * 4 != int($i * 4)) bad = 1 } END { exit bad }' && ok \
+  || fail "bits=2 left a coordinate that is not a multiple of 1/4: $kept"
+[ "$(echo "$kept" | tr ' ' '\n' | sort -u | wc -l)" = 4 ] && ok || fail "bits=2: not the 4 values 0, 1/4, 1/2, 3/4"
+expect_error "invalid bits = 65" points -s 'sobol(bits=65)' -n 4
 expect_error "output" points --sampler halton -n 4 -o /nonexistent/x.txt
 [ ! -e /nonexistent/x.txt ] && ok || fail "partial file left"
 [ "$(id -u)" != 0 ] && chmod 555 "$tmp" && { expect_error "output" points --sampler halton -n 4 -o "$tmp/ro.txt"; chmod 755 "$tmp"; }

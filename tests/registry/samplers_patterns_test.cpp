@@ -7,7 +7,10 @@
 #include <vector>
 
 #include "../patterns/unbiased.hpp"
+#include "bulk_permutation.hpp"
 #include "error_of.hpp"
+#include "stratum/patterns/latin_hypercube.hpp"
+#include "stratum/patterns/strata.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 
@@ -41,6 +44,40 @@ TEST(PatternRegistry, LatinHypercubeIsAnAliasOfNRooks) {
     ASSERT_EQ(a.n * a.d, b.n * b.d);
     EXPECT_EQ(0, std::memcmp(a.data.get(), b.data.get(), a.n * a.d * sizeof(double)));
   }
+}
+
+// The registry's blocked, row-major fill equals LatinHypercube::generate
+// (one dimension at a time) bit for bit: d around the block of 8, centered
+// or not, one thread or two.
+TEST(PatternRegistry, NRooksEqualsLatinHypercubeGenerate) {
+  for (unsigned d : {1u, 3u, 8u, 9u, 17u})
+    for (std::uint64_t n : {1u, 5u, 1000u})
+      for (bool centered : {false, true})
+        for (unsigned threads : {1u, 2u}) {
+          SamplerRequest request = request_of(n, d, 11);
+          request.threads = threads;
+          if (centered) request.params["centered"] = "1";
+          const PointSet points = generate_points("n-rooks", request);
+          const LatinHypercube lhs(n, d, 11, centered);
+          std::vector<double> expected(n * d);
+          std::vector<std::uint64_t> scratch(n);
+          lhs.generate(expected.data(), scratch.data());
+          for (std::uint64_t i = 0; i < n; ++i)
+            for (unsigned j = 0; j < d; ++j)
+              ASSERT_EQ(points(i, j), expected[i * d + j]) << "d " << d << " n " << n << " i " << i << " j " << j;
+        }
+}
+
+// The bulk Fisher-Yates (vectorized draws) is random_permutation exactly:
+// n below, at and past its chunk of 2048 steps, several keys.
+TEST(PatternRegistry, BulkPermutationEqualsRandomPermutation) {
+  for (std::uint64_t n : {1u, 2u, 3u, 100u, 2048u, 2049u, 4097u, 70000u})
+    for (std::uint64_t key : {0ull, 1ull, 0x9e3779b97f4a7c15ull, ~0ull}) {
+      std::vector<std::uint32_t> bulk(n), reference(n);
+      registry_support::bulk_random_permutation(bulk.data(), n, key);
+      random_permutation(reference.data(), n, key);
+      ASSERT_EQ(bulk, reference) << "n " << n << " key " << key;
+    }
 }
 
 TEST(PatternRegistry, GridTakesStrataAndValidatesN) {

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <boost/random/detail/sobol_table.hpp>
 #include <boost/random/sobol.hpp>
 #include <cstring>
 #include <initializer_list>
@@ -43,23 +46,63 @@ TEST(Sobol, EqualsBoostRandomSobolBitForBit) {
     for (unsigned j = 0; j < d; ++j) ASSERT_EQ(sobol.bits(i, j), engine()) << "point " << i << " dim " << j;
 }
 
-TEST(Sobol, EqualsBoostInAllJoeKuoDimensions) {
-  const Sobol sobol(Sobol::max_dimensions);
-  boost::random::sobol engine(Sobol::max_dimensions);
+// Boost.Random ships the first 3667 Joe-Kuo dimensions: the check on the
+// 21201-dimension table generated from scipy's copy.
+constexpr unsigned boost_dimensions = boost::random::detail::qrng_tables::sobol::max_dimension;
+
+TEST(Sobol, TableEqualsBoostsJoeKuoTableWhereItHasOne) {
+  using boost_table = boost::random::detail::qrng_tables::sobol;
+  ASSERT_EQ(boost_dimensions, 3667u);
+  EXPECT_EQ(sobol_joe_kuo::directions(0).degree, 0u);
+  for (unsigned dim = 1; dim < boost_dimensions; ++dim) {
+    const auto table = sobol_joe_kuo::directions(dim);
+    ASSERT_EQ(table.polynomial, boost_table::polynomial(dim - 1)) << dim;
+    ASSERT_EQ(table.degree, unsigned(std::bit_width(table.polynomial)) - 1) << dim;
+    for (unsigned k = 0; k < boost_table::max_degree; ++k)
+      ASSERT_EQ(k < table.degree ? table.m[k] : 0u, boost_table::minit(dim - 1, k)) << dim << " " << k;
+  }
+}
+
+TEST(Sobol, TableRecordsAreJoeKuoShaped) {
+  // Every dimension: a polynomial of the stated degree with a_0 = 1, degrees
+  // ascending, m_k odd and below 2^k; the last dimension's values as in
+  // new-joe-kuo-6.21201 (dimension 21201 there: s = 18, a = 115799).
+  unsigned previous = 0;
+  for (unsigned dim = 1; dim < Sobol::max_dimensions; ++dim) {
+    const auto table = sobol_joe_kuo::directions(dim);
+    ASSERT_EQ(unsigned(std::bit_width(table.polynomial)) - 1, table.degree) << dim;
+    ASSERT_EQ(table.polynomial & 1u, 1u) << dim;
+    ASSERT_GE(table.degree, previous) << dim;
+    previous = table.degree;
+    for (unsigned k = 1; k <= table.degree; ++k) {
+      ASSERT_EQ(table.m[k - 1] % 2, 1u) << dim << " " << k;
+      ASSERT_LT(table.m[k - 1], 1u << k) << dim << " " << k;
+    }
+  }
+  const auto last = sobol_joe_kuo::directions(21200);
+  EXPECT_EQ(last.degree, 18u);
+  EXPECT_EQ(last.polynomial, 524263u);  // 2^18 + 2 * 115799 + 1
+  const std::uint32_t m[18] = {1, 1, 7, 11, 15, 7, 37, 239, 337, 245, 1557, 3681, 7357, 9639, 27367, 26869, 114603, 86317};
+  for (unsigned k = 0; k < 18; ++k) EXPECT_EQ(last.m[k], m[k]) << k;
+}
+
+TEST(Sobol, EqualsBoostInAllOfBoostsDimensions) {
+  const Sobol sobol(boost_dimensions);
+  boost::random::sobol engine(boost_dimensions);
   for (std::uint64_t i = 1; i <= 16; ++i)
-    for (unsigned j = 0; j < Sobol::max_dimensions; ++j) ASSERT_EQ(sobol.bits(i, j), engine()) << i << " " << j;
+    for (unsigned j = 0; j < boost_dimensions; ++j) ASSERT_EQ(sobol.bits(i, j), engine()) << i << " " << j;
 }
 
 TEST(Sobol, RejectsDimensionsOutsideTheTable) {
-  EXPECT_EQ(Sobol::max_dimensions, 3667u);
+  EXPECT_EQ(Sobol::max_dimensions, 21201u);
   EXPECT_THROW(Sobol(0), invalid_argument);
   try {
-    Sobol sobol(3668);
+    Sobol sobol(21202);
     FAIL() << "no exception";
   } catch (const invalid_argument& e) {
     EXPECT_EQ(e.argument(), "d");
-    EXPECT_NE(std::string(e.what()).find("3668"), std::string::npos);
-    EXPECT_NE(std::string(e.what()).find("1 to 3667"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("21202"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("1 to 21201"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("Joe-Kuo"), std::string::npos);
   }
 }
@@ -421,14 +464,51 @@ TEST(SobolRegistry, DefaultIsOwenHashAndZeroTwoIsTheFirstTwoDimensions) {
   EXPECT_THROW(generate_points("zero-two", request), invalid_argument);
 }
 
+// bits=b keeps b digits of every coordinate after the randomizer: exactly
+// floor(x 2^b) / 2^b of the full points, for each randomizer and layout
+// (the linear ones through masked columns, the others at the finish).
+TEST(SobolRegistry, BitsKeepsTheFirstDigits) {
+  for (unsigned d : {3u, 8u, 300u})
+    for (const char* randomize : {"none", "xor", "lms", "owen-hash", "owen", "cp"})
+      for (unsigned bits : {1u, 7u, 30u, 52u, 53u, 60u}) {
+        SamplerRequest request;
+        request.n = 700;
+        request.d = d;
+        request.seed = 9;
+        request.start = 3;
+        request.randomize = randomize;
+        const PointSet full = generate_points("sobol", request);
+        request.params["bits"] = std::to_string(bits);
+        const PointSet kept = generate_points("sobol", request);
+        const double scale = std::ldexp(1.0, int(bits));
+        for (std::uint64_t i = 0; i < *request.n; ++i)
+          for (unsigned j = 0; j < d; ++j)
+            ASSERT_EQ(kept(i, j), std::floor(full(i, j) * scale) / scale)
+                << randomize << " d " << d << " bits " << bits << " i " << i << " j " << j;
+      }
+  for (const char* bad : {"0", "65", "-1", "x"}) {
+    SamplerRequest request;
+    request.n = 4;
+    request.d = 2;
+    request.randomize = "none";
+    request.params["bits"] = bad;
+    try {
+      generate_points("sobol", request);
+      FAIL() << bad;
+    } catch (const invalid_argument& e) {
+      EXPECT_EQ(e.argument(), "bits") << bad;
+    }
+  }
+}
+
 TEST(SobolRegistry, RejectsBadOrderAndTooManyDimensions) {
   EXPECT_THROW(registry_points("sobol", 4, 2, "none", 0, 0, 1, "reversed"), invalid_argument);
   try {
-    registry_points("sobol", 4, 3668, "none", 0);
+    registry_points("sobol", 4, 21202, "none", 0);
     FAIL() << "no exception";
   } catch (const invalid_argument& e) {
     EXPECT_EQ(e.argument(), "d");
-    EXPECT_NE(std::string(e.what()).find("3668"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("21202"), std::string::npos);
   }
 }
 

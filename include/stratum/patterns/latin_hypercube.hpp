@@ -38,13 +38,28 @@ class LatinHypercube {
   /// holds count() entries.
   template <class Index>
   void permutation(unsigned dim, Index* cells) const noexcept {
-    random_permutation(cells, count_, hash64(seed_, 0x4e524f4f4b53ULL, dim));
+    random_permutation(cells, count_, permutation_key(dim));
   }
+  /// The key of dimension dim's permutation (random_permutation's `key`).
+  std::uint64_t permutation_key(unsigned dim) const noexcept { return hash64(seed_, 0x4e524f4f4b53ULL, dim); }
 
   /// Coordinate dim of point `index`, given its interval cell = π_dim(index).
   template <class Real = double>
   Real coordinate(std::uint64_t cell, std::uint64_t index, unsigned dim) const noexcept {
     const double offset = centered_ ? 0.5 : uniform01<double>(hash64(seed_, 0x4a4954544552ULL), index, dim);
+    return cell_coordinate<Real>(cell, offset, count_);
+  }
+
+  /// The jitter hashes as a chain: offset(index, dim) = hash64(key, index,
+  /// dim) = hash64_extend(hash64_extend(hash64(key), index), dim), so a row
+  /// shares its first link (row_key(index)) over its coordinates.
+  std::uint64_t row_key(std::uint64_t index) const noexcept {
+    return hash64_extend(hash64(hash64(seed_, 0x4a4954544552ULL)), index);
+  }
+  /// coordinate(cell, index, dim) from row_key(index).
+  template <class Real = double>
+  Real coordinate_in_row(std::uint64_t cell, std::uint64_t row_key, unsigned dim) const noexcept {
+    const double offset = centered_ ? 0.5 : bits_to_double(hash64_extend(row_key, dim));
     return cell_coordinate<Real>(cell, offset, count_);
   }
 

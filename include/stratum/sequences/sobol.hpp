@@ -2,8 +2,10 @@
 /// Sobol' sequence in base 2 (Sobol' 1967, "On the distribution of points in
 /// a cube and the approximate evaluation of integrals") with the direction
 /// numbers of Joe and Kuo (2008, "Constructing Sobol sequences with better
-/// two-dimensional projections"), read from the table Boost.Random ships
-/// (3667 dimensions), never retyped.
+/// two-dimensional projections"), new-joe-kuo-6.21201: all 21201 dimensions,
+/// generated from scipy's copy by scripts/generate_sobol_table.py, never
+/// retyped (stratum/sequences/sobol_directions.hpp); the first 3667 are
+/// checked against the table Boost.Random ships.
 ///
 /// Why 64-bit generator matrices: with the usual 32 columns the index wraps
 /// at 2^32 and only 32 of a double's 53 bits carry information. Here every
@@ -36,7 +38,6 @@
 /// kernel takes by value; view() points into this object, view(copy) into a
 /// copy of table() that `copy` makes (e.g. in device memory).
 #include <bit>
-#include <boost/random/detail/sobol_table.hpp>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -44,6 +45,7 @@
 #include <vector>
 
 #include "stratum/randomizers/base2.hpp"
+#include "stratum/sequences/sobol_directions.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -51,8 +53,8 @@ namespace stratum {
 
 class Sobol {
  public:
-  /// Dimensions in Boost.Random's Joe–Kuo table (dimension 0 is van der Corput).
-  static constexpr unsigned max_dimensions = boost::random::detail::qrng_tables::sobol::max_dimension;
+  /// Dimensions of the Joe–Kuo table (dimension 0 is van der Corput), as scipy's Sobol.MAXDIM.
+  static constexpr unsigned max_dimensions = sobol_joe_kuo::dimensions;
   /// Columns of each generator matrix (bits of the index it can consume).
   static constexpr unsigned columns = 64;
 
@@ -124,7 +126,7 @@ class Sobol {
 
   explicit Sobol(unsigned dimensions, Order order = Order::gray) : dimensions_(dimensions), order_(order) {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
-            "Sobol supports 1 to 3667 dimensions (Joe-Kuo table in Boost.Random)");
+            "Sobol supports 1 to 21201 dimensions (the Joe-Kuo table new-joe-kuo-6.21201)");
     data_.resize(std::size_t{dimensions} * block_size);
     for (unsigned dim = 0; dim < dimensions; ++dim) {
       std::uint64_t* block = &data_[std::size_t{dim} * block_size];
@@ -205,18 +207,18 @@ class Sobol {
 
   /// Generator-matrix columns of dimension dim from the Joe–Kuo table:
   /// out[k − 1] = m_k · 2^(64−k), k = 1..64. Dimension 0 has m_k = 1
-  /// (van der Corput); dimension j ≥ 1 uses primitive polynomial j − 1 of
-  /// degree s, whose bits a_s..a_0 (a_s = a_0 = 1) give the recursion
+  /// (van der Corput); dimension j ≥ 1 uses its primitive polynomial of
+  /// degree s (Boost's polynomial j − 1, scipy's poly[j]), whose bits a_s..a_0 (a_s = a_0 = 1) give the recursion
   /// m_k = m_{k−s} ⊕ ⊕_{i=1..s} a_{s−i} · 2^i · m_{k−i} (Bratley, Fox 1988).
   static void direction_numbers(unsigned dim, std::uint64_t* out) {
     std::uint64_t m[columns + 1] = {};
     if (dim == 0) {
       for (unsigned k = 1; k <= columns; ++k) m[k] = 1;
     } else {
-      using table = boost::random::detail::qrng_tables::sobol;
-      const std::uint64_t poly = table::polynomial(dim - 1);
-      const unsigned degree = static_cast<unsigned>(std::bit_width(poly)) - 1;
-      for (unsigned k = 1; k <= degree; ++k) m[k] = table::minit(dim - 1, k - 1);
+      const sobol_joe_kuo::Directions table = sobol_joe_kuo::directions(dim);
+      const std::uint64_t poly = table.polynomial;
+      const unsigned degree = table.degree;
+      for (unsigned k = 1; k <= degree; ++k) m[k] = table.m[k - 1];
       for (unsigned k = degree + 1; k <= columns; ++k) {
         std::uint64_t value = m[k - degree];
         for (unsigned i = 1; i <= degree; ++i)

@@ -19,8 +19,12 @@ for entry in data["samplers"]:
     y = [row["rmse"] ** 2 if quantity == "rmse" else row["variance"] for row in entry["rows"]]
     label = f'{entry["name"]}:{entry["randomize"]}'
     if entry["slope"] is not None:
-        se = entry["slope_standard_error"]
-        label += f' (slope {entry["slope"]:.2f}' + (f' ± {se:.2f})' if se is not None else ")")
+        interval = entry.get("slope_interval") or [None, None]
+        if None not in interval:
+            level = f'{100 * entry["slope_confidence"]:g}%'
+            label += f' (slope {entry["slope"]:.2f}, {level} [{interval[0]:.2f}, {interval[1]:.2f}])'
+        else:
+            label += f' (slope {entry["slope"]:.2f})'
         if quantity == "rmse":
             label += " [MSE]"
     positive = [(a, b) for a, b in zip(n, y) if b > 0]
