@@ -19,6 +19,7 @@
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 
@@ -141,6 +142,7 @@ double tensor_product_integral(const PointFunction& f, unsigned d, const Quadrat
       std::vector<unsigned> digit(d);
       std::vector<double> x(d);
       for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
+        check_interrupt();
         const std::uint64_t first = b * block, last = std::min(n, first + block);
         std::uint64_t rest = first;
         for (unsigned j = 0; j < d; ++j, rest /= m) digit[j] = static_cast<unsigned>(rest % m);
@@ -299,6 +301,7 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
   const distributed::Dealt mine = distributed::dealt(tasks.size());  // round-robin: every series shared
   in_arena(request.threads, [&] {
     tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      check_interrupt();
       const std::size_t t = mine[j];
       const Task& task = tasks[t];
       const DimensionSeries& series = study.series[task.series];
