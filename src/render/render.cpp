@@ -14,6 +14,7 @@
 #include "stratum/render/camera_model.hpp"
 #include "stratum/render/integrators.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::render {
 
@@ -83,44 +84,48 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
   for (std::uint32_t pass = 0; pass < passes; ++pass) {
     const std::uint32_t first = std::uint64_t(spp) * pass / passes, last = std::uint64_t(spp) * (pass + 1) / passes;
     tbb::parallel_for(first_tile, last_tile, [&](int t) {
-      PixelSampler sampler(prototype);  // per tile: its own per-pixel cache
-      const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
-      const int x1 = std::min(x0 + tile, width), y1 = std::min(y0 + tile, height);
-      // The tile's new sums, stored only when the whole tile is done: a stop
-      // (checked per pixel) leaves the tile as the passes before left it.
-      double tile_sum[tile * tile][3], tile_sum2[tile * tile][3];
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-          if (alone && stop_requested()) return;
-          const std::size_t p = 3 * (std::size_t(y) * width + x);
-          const int q = (y - y0) * tile + (x - x0);
-          // The pixel's sums in registers, added to in the same order as
-          // sample by sample into memory (the same bits), stored once.
-          double s[3] = {0, 0, 0}, s2[3] = {0, 0, 0};
-          if (pass > 0)
-            for (int c = 0; c < 3; ++c) s[c] = sum[p + c], s2[c] = sum2[p + c];
-          for (std::uint32_t index = first; index < last; ++index) {
-            sampler.start_pixel_sample(std::uint32_t(x), std::uint32_t(y), index);
-            const auto film = settings.pixel_centers ? std::array{0.5, 0.5} : sampler.get_pixel_2d();
-            const double time = sampler.get_time();
-            const auto lens = sampler.get_2d();
-            const Ray ray = camera.generate(x + film[0], y + film[1], lens, time);
-            const Vec3 l = integrator.radiance(ray, sampler);
-            for (int c = 0; c < 3; ++c) {
-              const double v = std::isfinite(l[c]) ? l[c] : 0.0;  // a NaN path counts as black
-              s[c] += v;
-              s2[c] += v * v;
+      try {  // a stop seen inside the sampler's draws (check_interrupt) leaves the tile as it was, too
+        PixelSampler sampler(prototype);  // per tile: its own per-pixel cache
+        const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+        const int x1 = std::min(x0 + tile, width), y1 = std::min(y0 + tile, height);
+        // The tile's new sums, stored only when the whole tile is done: a stop
+        // (checked per pixel) leaves the tile as the passes before left it.
+        double tile_sum[tile * tile][3], tile_sum2[tile * tile][3];
+        for (int y = y0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x) {
+            if (alone && stop_requested()) return;
+            const std::size_t p = 3 * (std::size_t(y) * width + x);
+            const int q = (y - y0) * tile + (x - x0);
+            // The pixel's sums in registers, added to in the same order as
+            // sample by sample into memory (the same bits), stored once.
+            double s[3] = {0, 0, 0}, s2[3] = {0, 0, 0};
+            if (pass > 0)
+              for (int c = 0; c < 3; ++c) s[c] = sum[p + c], s2[c] = sum2[p + c];
+            for (std::uint32_t index = first; index < last; ++index) {
+              sampler.start_pixel_sample(std::uint32_t(x), std::uint32_t(y), index);
+              const auto film = settings.pixel_centers ? std::array{0.5, 0.5} : sampler.get_pixel_2d();
+              const double time = sampler.get_time();
+              const auto lens = sampler.get_2d();
+              const Ray ray = camera.generate(x + film[0], y + film[1], lens, time);
+              const Vec3 l = integrator.radiance(ray, sampler);
+              for (int c = 0; c < 3; ++c) {
+                const double v = std::isfinite(l[c]) ? l[c] : 0.0;  // a NaN path counts as black
+                s[c] += v;
+                s2[c] += v * v;
+              }
             }
+            for (int c = 0; c < 3; ++c) tile_sum[q][c] = s[c], tile_sum2[q][c] = s2[c];
           }
-          for (int c = 0; c < 3; ++c) tile_sum[q][c] = s[c], tile_sum2[q][c] = s2[c];
-        }
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-          const std::size_t p = 3 * (std::size_t(y) * width + x);
-          const int q = (y - y0) * tile + (x - x0);
-          for (int c = 0; c < 3; ++c) sum[p + c] = tile_sum[q][c], sum2[p + c] = tile_sum2[q][c];
-        }
-      tile_samples[std::size_t(t)] = last;
+        for (int y = y0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x) {
+            const std::size_t p = 3 * (std::size_t(y) * width + x);
+            const int q = (y - y0) * tile + (x - x0);
+            for (int c = 0; c < 3; ++c) sum[p + c] = tile_sum[q][c], sum2[p + c] = tile_sum2[q][c];
+          }
+        tile_samples[std::size_t(t)] = last;
+      } catch (const interrupted&) {
+        if (!alone) throw;
+      }
     });
     const bool complete = std::all_of(tile_samples.begin() + first_tile, tile_samples.begin() + last_tile,
                                       [&](std::uint32_t n) { return n == last; });

@@ -16,9 +16,13 @@ run() { exec env --default-signal=INT "$stratum" "$@"; }
 watchdog() { (sleep 20; kill -KILL "$1" 2>/dev/null) & }
 
 hidden() { ls -A "$1" | grep '^\.' || true; }  # staging files left in folder $1
-wait_staged() {  # until the command's staging file exists (its outputs are prepared), then a moment more
-  for _ in $(seq 200); do [ -n "$(hidden "$1")" ] && break; sleep 0.05; done
-  sleep "$2"
+wait_cpu() {  # wait_cpu PID SECONDS: until the process has run SECONDS of CPU time (past its set-up, on a busy machine too)
+  local ticks=$(getconf CLK_TCK) used
+  for _ in $(seq 400); do
+    used=$(awk '{print $14 + $15}' "/proc/$1/stat" 2>/dev/null) || return
+    [ "$used" -ge $(($2 * ticks)) ] && return
+    sleep 0.05
+  done
 }
 
 # --- one SIGINT: the partial image, a message, exit 130 ---------------------------------
@@ -26,7 +30,7 @@ mkdir "$tmp/one"
 (run render --width 64 --height 64 --spp 4096 --passes 4096 --threads 2 -q -o "$tmp/one/r.png" 2>"$tmp/one.err") &
 renderer=$!
 watchdog "$renderer"
-wait_staged "$tmp/one" 2
+wait_cpu "$renderer" 2
 kill -INT "$renderer"
 wait "$renderer"
 status=$?
@@ -41,13 +45,14 @@ PY
 [ -z "$(hidden "$tmp/one")" ] && ok || fail "one SIGINT left $(hidden "$tmp/one")"
 
 # --- two SIGINTs: the second ends the render at once, no output --------------------------
-# One pixel of 16M samples: the first SIGINT is seen between pixels, so the
-# render goes on (and is alive after it); only the second one can end it.
+# One pixel of 1024 samples of 65536 shadow rays each (half a minute): the
+# first SIGINT is seen between pixels, so the render goes on (and is alive
+# after it); only the second one can end it.
 mkdir "$tmp/two"
-(run render --width 1 --height 1 --spp 16777216 --passes 1 -q -o "$tmp/two/r.png" 2>"$tmp/two.err") &
+(run render --width 1 --height 1 --spp 1024 --passes 1 --light-samples 65536 -q -o "$tmp/two/r.png" 2>"$tmp/two.err") &
 renderer=$!
 watchdog "$renderer"
-wait_staged "$tmp/two" 1.5
+wait_cpu "$renderer" 2
 kill -INT "$renderer"
 sleep 0.5
 kill -0 "$renderer" 2>/dev/null && ok || fail "two SIGINTs: the first one ended the render of a pixel"
