@@ -14,6 +14,7 @@ import stratum
 
 CASES = {
     "measure": "stratum.measure(np.random.default_rng(1).random((400000, 4)), 'l2-star', algorithm='warnock')",
+    "study": "stratum.study_dimension(dims='1:10', n='16:16777216', runs=64)",
     "converge": "stratum.converge('genz-gaussian', ['random', 'sobol:owen'], n='1024:16777216:4', runs=256, d=8)",
 }
 if hasattr(stratum, "comparisons"):  # built with the renderer
