@@ -20,6 +20,7 @@
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 #include "stratum/util/interrupt.hpp"
+#include "stratum/memory.hpp"
 
 namespace stratum::analysis {
 
@@ -297,6 +298,17 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
   // Squared errors per task, stored by index and summed serially below:
   // the result does not depend on scheduling, nor on how a distributed job
   // shares the tasks out.
+  if (request.sobol) {  // the memory guard: each Sobol' task holds its n x d points (Monte Carlo streams them)
+    double largest = 0;
+    std::string which;
+    for (const DimensionSeries& series : study.series)
+      for (const std::uint64_t n : series.n)
+        if (double(n) * series.d > largest)
+          largest = double(n) * series.d, which = std::to_string(n) + " x " + std::to_string(series.d);
+    const double concurrent = std::min<double>(request.threads, double(tasks.size()));
+    require_memory(concurrent * largest * sizeof(double),
+                   to_message_string(concurrent) + " Sobol' runs at once of up to " + which + " points");
+  }
   std::vector<double> squared_error(tasks.size());
   const distributed::Dealt mine = distributed::dealt(tasks.size());  // round-robin: every series shared
   in_arena(request.threads, [&] {

@@ -34,6 +34,11 @@ refused "needs 320.0 KiB for 2 runs at once of 4096 x 4 points and their integra
 limited 327680 converge --integrand genz-gaussian -d 4 --samplers random --n 64:4096:4 --runs 4 --threads 2 && ok ||
   fail "converge under the limit: $(cat "$tmp/err")"
 
+# study dimension: 2 Sobol' runs at once of up to 729 x 2 points (23328 bytes)
+refused "needs 22.8 KiB for 2 Sobol' runs at once of up to 729 x 2 points, 22.8 KiB available" 23327 \
+  study dimension --dims 1:2 --n 16:1024 --threads 2
+limited 23328 study dimension --dims 1:2 --n 16:1024 --threads 2 && ok || fail "study dimension under the limit: $(cat "$tmp/err")"
+
 if "$stratum" render --help >/dev/null 2>&1; then
   # render: 96 bytes per pixel (64 x 64 = 393216 bytes)
   refused "needs 384.0 KiB for a 64x64 render (its sums, mean and variance per pixel)" 393215 \
