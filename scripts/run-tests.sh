@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test: installs what is missing, builds Release and runs ctest and
-# pytest, builds the consumer example against an installed package, then
+# pytest, runs the parsers' fuzz targets briefly, builds the consumer example
+# against an installed package, then
 # builds the C++ tests with AddressSanitizer + UBSan and runs them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +14,9 @@ echo "== ctest (release)"
 ctest --preset release -j "$jobs"
 echo "== pytest"
 PYTHONPATH=build/release/python /usr/bin/python3 -m pytest -q python/tests
+
+echo "== fuzz targets (docs/fuzzing.md): 2000 inputs each from the seed corpora"
+bash scripts/fuzz.sh --runs 2000
 
 echo "== install + find_package consumer"
 rm -rf build/install build/consumer

@@ -45,6 +45,12 @@ void run_discrepancy(const DiscrepancyOptions& o) {
     params[key] = value;
   }
   if (o.measure != "all") sa::find_measure(o.measure);  // an unknown name fails before any work
+  if (o.file.empty() && o.n && *o.n >= 1 && o.d.value_or(2) >= 1) {  // generated points: their memory and the measure's, first
+    const auto n = static_cast<std::size_t>(*o.n), d = static_cast<std::size_t>(o.d.value_or(2));
+    for (const auto& m : sa::measures())
+      if (m.name == o.measure || (o.measure == "all" && d >= m.min_dim && (m.max_dim == 0 || d <= m.max_dim)))
+        sa::require_measure_memory(m.name, n, d, {params, static_cast<unsigned>(o.threads)});
+  }
   const PointSet points = load_points(o);
   const sa::PointView view{points.data.get(), points.n, points.d};
   sa::check_unit_cube(view);

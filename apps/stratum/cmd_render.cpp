@@ -6,8 +6,7 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
+#include <algorithm>
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
@@ -15,13 +14,11 @@
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::cli {
 
 namespace {
-
-std::atomic<bool> interrupted{false};
-extern "C" void on_interrupt(int) { interrupted.store(true); }
 
 struct RenderOptions {
   std::string scene, output = "render.png", exr, variance, cache = ".stratum-cache";
@@ -74,11 +71,11 @@ void run_render(RenderOptions& options) {
     fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text, cached ? "loaded from the cache" : "rendered and cached in",
                render::reference_cache_path(scene, key, options.settings, spp, options.cache));
   } else {
-    // Ctrl-C stops the render and keeps its partial image; the handler that
-    // was there before (removing staging files) is back for the writing.
-    const auto previous = std::signal(SIGINT, on_interrupt);
-    image = render::render(scene, options.settings, progress, &interrupted);
-    std::signal(SIGINT, previous);
+    // A first Ctrl-C stops the render within a tile and keeps its partial
+    // image (written below, then exit 130); a second one ends the process at
+    // once, leaving no output (io::StopOnInterrupt).
+    io::StopOnInterrupt stop_keeps_work;
+    image = render::render(scene, options.settings, progress, &interrupt_flag());
   }
   require(options.variance.empty() || image.variance.size() == image.rgb.size(), "variance", options.variance,
           "needs per-pixel variances: this cached reference has none (delete it from --cache to render it again)");
@@ -86,9 +83,17 @@ void run_render(RenderOptions& options) {
   if (exr) render::write_image(image, *exr);
   if (variance) render::write_variance_image(image, *variance);
   outputs.commit();  // all or none: a failure here removes the outputs committed before it
+  if (image.stopped) {
+    if (show) fmt::print(stderr, "\n");
+    throw interrupted(fmt::format(
+        "stopped by Ctrl-C: {} holds the {} of {} passes completed ({} of {} spp per pixel{})", options.output, image.passes,
+        std::clamp<std::uint32_t>(options.settings.passes, 1, options.settings.sampler.spp), image.samples,
+        options.settings.sampler.spp,
+        image.partial_pass > 0 ? fmt::format("; {:.0f}% of the tiles also the next pass", 100 * image.partial_pass) : ""));
+  }
   if (!options.quiet)
     fmt::print("{}: {}x{}, {} spp, {:.2f} s{}\n", options.output, image.width, image.height, image.samples, image.seconds,
-               interrupted ? " (interrupted)" : options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
+               options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
 }
 
 }  // namespace

@@ -11,7 +11,9 @@
 #include "distributed_job.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/io/output_file.hpp"
+#include "stratum/memory.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 int main(int argc, char** argv) {
   stratum::cli::DistributedJob job(argc, argv);  // an MPI rank under mpirun/srun
@@ -52,12 +54,16 @@ int main(int argc, char** argv) {
     code = app.exit(e);  // usage errors and --help print themselves (on rank 0)
   } catch (const stratum::distributed::PeerFailure&) {
     code = 1;  // another rank failed and says why
+  } catch (const stratum::interrupted& e) {
+    code = 130, message = e.what();  // Ctrl-C, as a shell reports a process it ended (128 + SIGINT)
   } catch (const stratum::invalid_argument& e) {
     code = 2, message = e.what();
   } catch (const std::filesystem::filesystem_error& e) {
     code = 1, message = e.what();
   } catch (const std::system_error& e) {  // fmt::print to a stdout that lost it (a full disk, a closed stdout)
     code = 1, message = "stdout: output was lost (" + e.code().message() + ")";
+  } catch (const stratum::memory_error& e) {
+    code = 3, message = e.what();  // refused before allocating (stratum/memory.hpp)
   } catch (const std::bad_alloc&) {
     code = 3, message = "out of memory";
   } catch (const std::exception& e) {

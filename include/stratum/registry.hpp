@@ -83,8 +83,8 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
 /// Validates, then generates. The one entry point the faces call.
 PointSet generate_points(std::string_view name, const SamplerRequest& request);
 
-/// Largest number of coordinates (n × d) stratum will allocate: half the
-/// physical memory, in doubles.
+/// Largest number of coordinates (n × d) stratum will allocate now: the
+/// memory guard's memory_available() (stratum/memory.hpp), in doubles.
 std::uint64_t max_coordinates();
 
 }  // namespace stratum

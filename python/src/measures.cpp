@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "stratum/analysis/koksma_hlawka.hpp"
 #include "stratum/analysis/l2_discrepancy.hpp"
 #include "stratum/analysis/local_discrepancy.hpp"
@@ -46,7 +47,7 @@ py::dict measure(const Array& x, const std::string& name, unsigned threads,
   const sa::PointView view = view_of(x);
   sa::MeasureResult result;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     result = sa::compute_measure(name, view, {params, threads});
   }
   py::object lower = result.lower ? py::object(py::float_(*result.lower)) : py::object(py::none());
@@ -69,7 +70,7 @@ double scipy_discrepancy(const Array& x, const std::string& method, bool iterati
   options.iterative = iterative;
   double squared = 0;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     squared = sa::l2_discrepancy_squared(kind, view, options);
   }
   return kind == sa::L2Kind::star ? std::sqrt(squared) : squared;
@@ -83,7 +84,7 @@ py::array_t<double> local_discrepancy(const Array& x, std::int64_t resolution) {
   sa::check_unit_cube(view);
   sa::LocalDiscrepancyGrid grid;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     grid = sa::local_discrepancy_grid(view, static_cast<std::size_t>(resolution));
   }
   const auto side = static_cast<py::ssize_t>(grid.resolution + 1);
@@ -109,7 +110,7 @@ py::list koksma_hlawka(const Array& x, double star) {
   const sa::PointView view = view_of(x);
   std::vector<sa::KoksmaHlawkaCheck> checks;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     checks = sa::koksma_hlawka_checks(view, star);
   }
   const auto& functions = sa::variation_test_functions();  // checks[i] is functions[i]
@@ -130,7 +131,7 @@ py::tuple koksma_hlawka_star(const Array& x, unsigned threads) {
   const sa::PointView view = view_of(x);
   sa::KoksmaHlawkaStar star;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     star = sa::koksma_hlawka_star(view, threads);
   }
   return py::make_tuple(star.value, star.kind);

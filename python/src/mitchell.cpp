@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/analysis/mitchell_study.hpp"
 
@@ -30,7 +31,7 @@ py::dict study_mitchell(const std::vector<std::size_t>& counts, std::size_t real
   }
   analysis::MitchellStudy study;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     study = analysis::run_mitchell_study(options);
   }
   py::list patterns;

@@ -5,6 +5,8 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
+#include "stratum/memory.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
@@ -52,7 +54,7 @@ py::array_t<double> points(const std::string& sampler, std::optional<std::uint64
   request.params = spec.params;
   stratum::PointSet result;
   {
-    py::gil_scoped_release release;
+    stratum::python::InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     result = stratum::generate_points(spec.name, request);
   }
   return to_numpy(std::move(result));
@@ -63,6 +65,8 @@ py::array_t<double> points(const std::string& sampler, std::optional<std::uint64
 PYBIND11_MODULE(_stratum, m) {
   m.doc() = "stratum: Monte Carlo and quasi-Monte Carlo sampling (compiled core)";
   py::register_exception<stratum::invalid_argument>(m, "InvalidArgument", PyExc_ValueError);
+  py::register_exception<stratum::memory_error>(m, "MemoryLimitError", PyExc_MemoryError);
+  stratum::python::register_interrupted(m);  // Ctrl-C in a long call: KeyboardInterrupt
   m.def("samplers", &sampler_list, "Every registry sampler as a dict");
   m.def("randomizers", [] { return stratum::randomizers(); }, "Every randomizer (name, description)");
   m.def("points", &points, py::arg("sampler"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("start"), py::arg("randomize"),

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
+#include "stratum/util/interrupt.hpp"
 #include "stratum/io/json.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/util/error.hpp"
@@ -40,10 +42,11 @@ py::tuple render_image(const std::string& scene_path, int width, int height, con
   render::Image image;
   bool cached = false;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     image = reference_spp > 0 ? render::reference_image(scene, render::scene_fingerprint(scene), settings, reference_spp, cache, &cached)
-                              : render::render(scene, settings);
+                              : render::render(scene, settings, {}, &interrupt_flag());
   }
+  if (image.stopped) throw interrupted();  // Ctrl-C: KeyboardInterrupt, no partial image
   py::object variance = py::none();
   if (image.variance.size() == image.rgb.size()) variance = to_array(image.variance, image.width, image.height);
   return py::make_tuple(to_array(image.rgb, image.width, image.height), variance, image.samples, image.seconds, cached);
@@ -61,7 +64,7 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
   const auto prepared = render::comparison_scene(scene_path, keep_motion, width, height);
   std::vector<render::CompareRow> rows;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     rows = render::compare(prepared.scene, prepared.key, configs, options);
   }
   py::list out;

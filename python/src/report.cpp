@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "stratum/report/report.hpp"
 
 namespace py = pybind11;
@@ -32,7 +33,7 @@ void bind_report(py::module_& m) {
         options.cache_dir = cache;
         report::ReportResult result;
         {
-          py::gil_scoped_release release;
+          InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
           result = report::write_report(options, [verbose](const std::string& line) {
             if (verbose) std::fprintf(stderr, "stratum report: %s\n", line.c_str());
           });

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "stratum/analysis/geometry.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/analysis/spectrum.hpp"
@@ -31,7 +32,7 @@ py::dict image_spectrum(const Array& values) {
   const std::vector<double> copy(values.data(), values.data() + values.size());
   sa::ImageSpectrum s;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     s = sa::image_spectrum(copy, width, height);
   }
   py::array_t<double> power({s.height, s.width});
@@ -56,7 +57,7 @@ py::dict spectrum(const Array& realizations, int max_frequency, unsigned threads
   sa::RadialPower radial;
   sa::BlueNoiseFigures figures;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     p = sa::mean_periodogram(views, max_frequency, threads);
     radial = sa::radial_average(p);
     figures = sa::blue_noise_figures(radial);
@@ -82,7 +83,7 @@ py::dict pair_correlation(const Array& x, const std::vector<double>& radii, doub
   const sa::PointView view{x.data(), static_cast<std::size_t>(x.shape(0)), static_cast<std::size_t>(x.shape(1))};
   sa::PairCorrelation g;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     g = sa::pair_correlation(view, radii, sigma, threads);
   }
   return py::dict(py::arg("r") = g.radius, py::arg("g") = g.g, py::arg("sigma") = g.sigma);

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "stratum/analysis/convergence.hpp"
 #include "stratum/analysis/dimension_study.hpp"
 #include "stratum/analysis/importance_study.hpp"
@@ -57,7 +58,7 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
   request.confidence = confidence;
   sa::IntegrationResult r;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     r = sa::integrate(request);
   }
   return py::dict(py::arg("integrand") = r.integrand, py::arg("sampler") = r.sampler,
@@ -85,7 +86,7 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
   request.threads = threads;
   sa::ConvergenceResult result;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     result = sa::run_convergence(request);
   }
   py::dict per_sampler;
@@ -155,7 +156,7 @@ py::dict study_dimension(unsigned min_dim, unsigned max_dim, std::uint64_t min_n
   request.seed = seed, request.threads = threads;
   sa::DimensionStudy study;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     study = sa::run_dimension_study(request);
   }
   py::list series;
@@ -216,7 +217,7 @@ py::dict study_importance(unsigned runs, std::uint64_t samples, const std::vecto
   request.radiance = radiance, request.seed = seed, request.threads = threads;
   sa::ImportanceStudy study;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     study = sa::run_importance_study(request);
   }
   return py::dict(py::arg("runs") = study.runs, py::arg("samples") = study.samples,

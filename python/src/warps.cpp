@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/warp_registry.hpp"
 
@@ -57,7 +58,7 @@ Array sample(const std::string& name, const Array& u, const WarpParams& params) 
   const std::size_t n = rows_of(u, warp->input_dim(), "u", name);
   std::vector<double> p;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     p = warp_sample(*warp, u.data(), n);
   }
   return to_array(std::move(p), n, warp->output_dim(), u.ndim() == 1 && warp->output_dim() == 1);
@@ -68,7 +69,7 @@ Array pdf(const std::string& name, const Array& p, const WarpParams& params) {
   const std::size_t n = rows_of(p, warp->output_dim(), "p", name);
   std::vector<double> density;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     density = warp_pdf(*warp, p.data(), n);
   }
   return to_array(std::move(density), n, 1, true);
@@ -79,7 +80,7 @@ Array invert(const std::string& name, const Array& p, const WarpParams& params) 
   const std::size_t n = rows_of(p, warp->output_dim(), "p", name);
   std::vector<double> u;
   {
-    py::gil_scoped_release release;
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
     u = warp_invert(*warp, p.data(), n);
   }
   return to_array(std::move(u), n, warp->input_dim(), p.ndim() == 1 && warp->input_dim() == 1);

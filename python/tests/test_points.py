@@ -45,7 +45,6 @@ def test_every_sampler_in_unit_cube_and_thread_invariant():
         (dict(name="halton", n="ten"), "n = 'ten'"),
         (dict(name="halton", n=4, d=0), "d = 0"),
         (dict(name="halton", n=4, d=5000), "d = 5000"),
-        (dict(name="random", n=10**15, d=3), "memory"),
         (dict(name="halton", n=4, randomize="shuffle"), "randomize"),
         (dict(name="halton", n=4, bogus=1), "bogus"),
         (dict(name="halton", n=None), "n"),
@@ -54,6 +53,11 @@ def test_every_sampler_in_unit_cube_and_thread_invariant():
 def test_bad_input_names_the_argument(kwargs, word):
     with pytest.raises(ValueError, match=word):
         stratum.points(**kwargs)
+
+
+def test_a_huge_request_is_refused_before_allocating():
+    with pytest.raises(MemoryError, match=r"needs 21\.3 PiB for 1000000000000000 x 3 points of random, .* available"):
+        stratum.points("random", 10**15, 3)
 
 
 def test_random_takes_start():

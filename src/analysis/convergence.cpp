@@ -25,6 +25,8 @@
 #include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/util/interrupt.hpp"
+#include "stratum/memory.hpp"
 
 namespace stratum::analysis {
 
@@ -74,6 +76,14 @@ RunOutcome run_once(const Integrand& integrand, const SamplerChoice& choice, std
   outcome.estimate = sum / static_cast<double>(points.n);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return outcome;
+}
+
+/// The memory guard (stratum/memory.hpp): `concurrent` runs at once, each
+/// holding n points of d coordinates and their n integrand values.
+void require_runs_memory(std::uint64_t concurrent, std::uint64_t n, unsigned d) {
+  require_memory(double(concurrent) * double(n) * (double(d) + 1) * sizeof(double),
+                 std::to_string(concurrent) + (concurrent == 1 ? " run" : " runs at once") + " of " + std::to_string(n) +
+                     " x " + std::to_string(d) + " points and their integrand values");
 }
 
 std::uint64_t parse_count(std::string_view item, std::string_view whole) {
@@ -242,6 +252,7 @@ IntegrationResult integrate(const IntegrationRequest& request) {
   result.n = request.n;
   result.runs = request.runs;
   result.exact = integrand->exact();
+  require_runs_memory(request.runs == 1 ? 1 : std::min<std::uint64_t>(request.threads, request.runs), request.n, d);
   const auto start = std::chrono::steady_clock::now();
   if (request.runs == 1) {
     // One point set: the standard error from its n values (i.i.d. formula).
@@ -262,6 +273,7 @@ IntegrationResult integrate(const IntegrationRequest& request) {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 1),
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           for (std::size_t j = range.begin(); j != range.end(); ++j) {
+                            check_interrupt();
                             const std::size_t r = mine[j];
                             const RunOutcome outcome =
                                 run_once(*integrand, request.sampler, request.n, hash64(request.seed, r), 1, false);
@@ -363,6 +375,9 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   // The tasks are also a job's items: each process of a distributed job runs
   // its share, and every process then holds every slot.
   const std::size_t tasks = cells.size() * request.runs;
+  std::uint64_t largest = 0;
+  for (const Cell& cell : cells) largest = std::max(largest, cell.n);
+  require_runs_memory(std::min<std::uint64_t>(request.threads, tasks), largest, d);
   std::vector<double> slots(2 * tasks);  // (estimate, seconds) of each task
   // Dealt round-robin: each process takes every K-th run of every cell, so
   // the costly cells (large N) are shared, not left to one process.
@@ -371,6 +386,7 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t j = range.begin(); j != range.end(); ++j) {
+        check_interrupt();
         const std::size_t task = mine[j];
         const Cell& cell = cells[task / request.runs];
         const std::size_t r = task % request.runs;

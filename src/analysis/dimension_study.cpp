@@ -19,6 +19,8 @@
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/util/interrupt.hpp"
+#include "stratum/memory.hpp"
 
 namespace stratum::analysis {
 
@@ -141,6 +143,7 @@ double tensor_product_integral(const PointFunction& f, unsigned d, const Quadrat
       std::vector<unsigned> digit(d);
       std::vector<double> x(d);
       for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
+        check_interrupt();
         const std::uint64_t first = b * block, last = std::min(n, first + block);
         std::uint64_t rest = first;
         for (unsigned j = 0; j < d; ++j, rest /= m) digit[j] = static_cast<unsigned>(rest % m);
@@ -295,10 +298,22 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
   // Squared errors per task, stored by index and summed serially below:
   // the result does not depend on scheduling, nor on how a distributed job
   // shares the tasks out.
+  if (request.sobol) {  // the memory guard: each Sobol' task holds its n x d points (Monte Carlo streams them)
+    double largest = 0;
+    std::string which;
+    for (const DimensionSeries& series : study.series)
+      for (const std::uint64_t n : series.n)
+        if (double(n) * series.d > largest)
+          largest = double(n) * series.d, which = std::to_string(n) + " x " + std::to_string(series.d);
+    const double concurrent = std::min<double>(request.threads, double(tasks.size()));
+    require_memory(concurrent * largest * sizeof(double),
+                   to_message_string(concurrent) + " Sobol' runs at once of up to " + which + " points");
+  }
   std::vector<double> squared_error(tasks.size());
   const distributed::Dealt mine = distributed::dealt(tasks.size());  // round-robin: every series shared
   in_arena(request.threads, [&] {
     tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      check_interrupt();
       const std::size_t t = mine[j];
       const Task& task = tasks[t];
       const DimensionSeries& series = study.series[task.series];

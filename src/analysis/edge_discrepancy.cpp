@@ -14,6 +14,7 @@
 
 #include "edge_discrepancy_detail.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 
@@ -148,7 +149,10 @@ void parallel_ranges(std::size_t count, unsigned threads, const std::function<vo
   oneapi::tbb::task_arena arena(threads == 0 ? oneapi::tbb::task_arena::automatic : static_cast<int>(threads));
   arena.execute([&] {
     oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, count),
-                              [&](const oneapi::tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); });
+                              [&](const oneapi::tbb::blocked_range<std::size_t>& range) {
+                                check_interrupt();
+                                body(range.begin(), range.end());
+                              });
   });
 }
 

@@ -12,6 +12,7 @@
 
 #include "stratum/patterns/neighbor_grid.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 namespace {
@@ -174,6 +175,7 @@ PairCorrelation pair_correlation(const PointView& points, const std::vector<doub
   std::vector<std::vector<double>> partial(blocks, std::vector<double>(radii.size(), 0.0));
   const double normal = 1.0 / (std::sqrt(2 * pi) * sigma);
   auto run_block = [&](std::size_t b) {
+    check_interrupt();
     std::vector<double>& sums = partial[b];
     for (std::size_t i = b * block; i < std::min(points.n, (b + 1) * block); ++i)
       grid.visit_near(&points.data[i * points.d], cutoff, [&](std::uint32_t j) {

@@ -22,6 +22,7 @@
 #include "stratum/warps/sphere.hpp"
 #include "stratum/warps/spherical_rectangle.hpp"
 #include "stratum/warps/vector3.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 
@@ -309,6 +310,7 @@ ImportanceStudy run_importance_study(const ImportanceStudyRequest& request) {
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      check_interrupt();
       const std::size_t t = mine[j];
       const std::size_t s = t / per_setup, which = (t % per_setup) / request.runs, run = t % request.runs;
       const Setup& setup = setups[s];

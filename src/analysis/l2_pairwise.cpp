@@ -14,6 +14,8 @@
 #include "stratum/analysis/l2_discrepancy.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
+#include "stratum/memory.hpp"
 
 namespace stratum::analysis {
 
@@ -141,6 +143,7 @@ long double pair_sum(const Columns& cols, unsigned threads) {
   const std::vector<std::size_t> order = deal_blocks(blocks);
   const distributed::Share mine = distributed::share(blocks);
   auto block = [&](std::size_t slot) {
+    check_interrupt();
     const std::size_t b = order[slot];
     partial[slot] = upper_pairs_dispatch<Pair>(cols, b * kRowBlock, std::min(n, (b + 1) * kRowBlock));
   };
@@ -190,9 +193,24 @@ long double single_sum(const PointView& p, Single h) {
 
 }  // namespace
 
+double l2_working_bytes(L2Kind kind, std::size_t n, std::size_t d, const L2Options& options) {
+  const double points = double(n), coordinates = double(n) * double(d);
+  const bool fast = kind == L2Kind::star && d <= 3 && options.algorithm != L2Algorithm::pairwise;
+  if (!fast) return 2 * sizeof(double) * coordinates;  // to_columns: x and its complement, column-major
+  // sorted_by_first: (key, index) pairs while the sorted columns are filled;
+  // then d = 2: two merge buffers of (y, 1 − x); d = 3: four index arrays,
+  // the cross sums and four Fenwick trees of long doubles.
+  const double sorting = 16 * points + sizeof(double) * coordinates;
+  const double merging = sizeof(double) * coordinates + (d == 2 ? 32 * points : d == 3 ? 112 * points : 0);
+  return std::max(sorting, merging);
+}
+
 double l2_discrepancy_squared(L2Kind kind, const PointView& points, const L2Options& options) {
   require(points.n >= 1, "n", points.n, "an L2 discrepancy needs at least 1 point");
   require(points.d >= 1, "d", points.d, "must be at least 1");
+  require_memory(l2_working_bytes(kind, points.n, points.d, options),
+                 "the L2 discrepancy of " + std::to_string(points.n) + " x " + std::to_string(points.d) +
+                     " points (its copies of the points and buffers)");
   const bool fast_possible = kind == L2Kind::star && points.d <= 3;
   if (options.algorithm == L2Algorithm::fast && !fast_possible)
     throw invalid_argument("algorithm", "fast",

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "measure_families.hpp"
+#include "stratum/memory.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::analysis {
@@ -41,6 +42,14 @@ void check_unit_cube(const PointView& points) {
         throw invalid_argument("point[" + std::to_string(i) + "][" + std::to_string(j) + "]", to_message_string(v),
                                "coordinates must be finite and in [0, 1]");
     }
+}
+
+void require_measure_memory(std::string_view name, std::size_t n, std::size_t d, const MeasureRequest& request) {
+  const MeasureInfo& info = find_measure(name);
+  const double points = double(n) * double(d) * sizeof(double);
+  const double working = info.working_bytes ? info.working_bytes(n, d, request) : 0.0;
+  require_memory(points + working, std::to_string(n) + " x " + std::to_string(d) + " points and their " + info.name +
+                                       " measure");
 }
 
 MeasureResult compute_measure(std::string_view name, const PointView& points, const MeasureRequest& request) {

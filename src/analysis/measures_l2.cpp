@@ -40,6 +40,11 @@ MeasureInfo l2_measure(std::string name, std::string description, L2Kind kind) {
   info.compute = [kind](const PointView& points, const MeasureRequest& request) {
     return l2_result(kind, points, request);
   };
+  info.working_bytes = [kind](std::size_t n, std::size_t d, const MeasureRequest& request) {
+    L2Options options;
+    if (kind == L2Kind::star) options.algorithm = algorithm_of(request);
+    return l2_working_bytes(kind, n, d, options);
+  };
   return info;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 namespace {
@@ -178,12 +179,18 @@ void add_rows(const PointView& points, int max_frequency, std::size_t rows, std:
     }
   };
   if (threads == 1 || tasks == 1) {
-    for (std::size_t task = 0; task < tasks; ++task) run_task(task);
+    for (std::size_t task = 0; task < tasks; ++task) {
+      check_interrupt();
+      run_task(task);
+    }
     return;
   }
   oneapi::tbb::task_arena arena(threads == 0 ? oneapi::tbb::task_arena::automatic : static_cast<int>(threads));
   arena.execute([&] {
-    oneapi::tbb::parallel_for(std::size_t{0}, tasks, [&](std::size_t task) { run_task(task); });
+    oneapi::tbb::parallel_for(std::size_t{0}, tasks, [&](std::size_t task) {
+      check_interrupt();
+      run_task(task);
+    });
   });
 }
 

@@ -28,6 +28,7 @@
 #include "star_discrepancy_sweep.hpp"
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 // Products and differences rounded one at a time (see the top of the file).
 #if defined(__GNUC__) && !defined(__clang__)
@@ -157,6 +158,7 @@ SweepTerms sweep_2d(const Points& points, double weight, double inv_n, unsigned 
 
   std::vector<SweepTerms> parts(chunks);
   auto run = [&](std::size_t c) {
+    check_interrupt();
     parts[c] = sweep_groups(points, starts, bounds[c], bounds[c + 1], c + 1 == chunks, weight, counts.data());
   };
   if (chunks == 1) {

@@ -30,6 +30,7 @@
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 namespace {
@@ -218,6 +219,7 @@ StarDiscrepancyBounds star_discrepancy_bounds(const PointView& points, double de
   oneapi::tbb::task_arena arena(static_cast<int>(std::max(1u, threads)));
   arena.execute([&] {
     oneapi::tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {
+      check_interrupt();
       parts[mine[j]] = partition.run(std::move(frontier[mine[j]]));
     });
   });

@@ -53,6 +53,7 @@
 #include "star_discrepancy_sweep.hpp"
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 // Products and differences rounded one at a time (see the top of the file).
 #if defined(__GNUC__) && !defined(__clang__)
@@ -164,7 +165,10 @@ class DemSearch {
     };
     if (parallel) {
       oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, cut.size(), 4),
-                                [&](const oneapi::tbb::blocked_range<std::size_t>& r) { run(r.begin(), r.end()); });
+                                [&](const oneapi::tbb::blocked_range<std::size_t>& r) {
+                                  check_interrupt();
+                                  run(r.begin(), r.end());
+                                });
     } else {
       run(0, cut.size());
     }

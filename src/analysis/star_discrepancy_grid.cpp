@@ -16,6 +16,7 @@
 #include "star_discrepancy_sweep.hpp"
 #include "stratum/analysis/star_discrepancy.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::analysis {
 namespace {
@@ -86,6 +87,7 @@ double star_discrepancy_grid(const PointView& points, unsigned threads) {
   const std::size_t tasks = group_starts.size();
   std::vector<double> open(tasks, kNoValue), closed(tasks, kNoValue);
   auto run = [&](std::size_t t) {
+    check_interrupt();
     const std::size_t i = group_starts[t];
     const bool last = t + 1 == tasks;
     const double c = last ? 1.0 : points(counted[i], top);

@@ -16,6 +16,7 @@
 
 #include "stratum/distributed.hpp"
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::io {
 
@@ -47,7 +48,16 @@ void unregister_staging(int& slot) {
   slot = -1;
 }
 
+// > 0 while a command would rather stop on Ctrl-C and keep its work (StopOnInterrupt).
+std::atomic<int> stop_scopes{0};
+
 extern "C" void remove_staging_and_reraise(int signal) {
+  // The first SIGINT of such a command asks it to stop; a second one (or
+  // SIGTERM) ends the process at once, as without it.
+  if (signal == SIGINT && stop_scopes.load() > 0 && !interrupt_requested()) {
+    request_interrupt();
+    return;
+  }
   for (int i = 0; i < registry_slots; ++i)
     if (live_state[i].load() == 2) ::unlink(live_paths[i]);
   std::signal(signal, SIG_DFL);
@@ -407,6 +417,13 @@ void install_signal_cleanup() {
     }
   }
 }
+
+StopOnInterrupt::StopOnInterrupt() {
+  clear_interrupt();
+  stop_scopes.fetch_add(1);
+}
+
+StopOnInterrupt::~StopOnInterrupt() { stop_scopes.fetch_sub(1); }
 
 void write_stdout(const std::function<void(std::ostream&)>& body) {
   if (!distributed::is_root()) return;  // rank 0 alone prints (the others' stdout is a sink)

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -143,10 +145,12 @@ PointSet read_text_strict(std::ifstream& in, const std::filesystem::path& path, 
   std::string line;
   while (std::getline(in, line)) {
     ++line_number;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
+    // Blank is what split_fields splits at (a line of '\v' or '\f' too: it
+    // holds no field, and once counted as a point of 0 values).
+    const auto first = std::find_if(line.begin(), line.end(), [](unsigned char c) { return !std::isspace(c); });
+    if (first == line.end() || *first == '#') continue;
     const std::vector<std::string> fields = split_fields(line, csv);
-    if (d == 0) {
+    if (first_line == 0) {
       d = fields.size();
       first_line = line_number;
     }

@@ -1,5 +1,7 @@
 #include "stratum/registry.hpp"
 
+#include "stratum/memory.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -47,12 +49,7 @@ const SamplerInfo& find_sampler(std::string_view name) {
                          "valid samplers are " + names);
 }
 
-std::uint64_t max_coordinates() {
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long page_size = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return std::uint64_t{1} << 30;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 2 / sizeof(double);
-}
+std::uint64_t max_coordinates() { return memory_available() / sizeof(double); }
 
 static std::string join(const std::vector<std::string>& items) {
   std::string text;
@@ -86,12 +83,9 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   SamplerRequest bound = request;
   bound.values = bind_params(sampler.name, sampler.params, request.params);
   if (sampler.validate) sampler.validate(bound);
-  if (const auto count = sampler.count(bound)) {
-    const std::uint64_t limit = max_coordinates();
-    require(*count <= limit / request.d, "n", *count,
-            "n x d = " + std::to_string(*count) + " x " + std::to_string(request.d) +
-                " coordinates exceeds the memory limit of " + std::to_string(limit) + " coordinates");
-  }
+  if (const auto count = sampler.count(bound))  // the points themselves (a sampler's own buffers: its validate)
+    require_memory(static_cast<double>(*count) * request.d * sizeof(double),
+                   std::to_string(*count) + " x " + std::to_string(request.d) + " points of " + sampler.name);
   return randomize;
 }
 

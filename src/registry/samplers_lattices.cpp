@@ -13,6 +13,7 @@
 #include "stratum/sequences/lattice_sequence.hpp"
 #include "stratum/util/error.hpp"
 #include "support.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::registry_families {
 
@@ -103,7 +104,10 @@ std::uint64_t search_korobov(std::uint64_t n, unsigned d, double gamma, unsigned
   std::vector<double> scores(count);
   for (std::uint64_t t = 0; t < count; ++t) parameters[t] = search.candidate(t);
   const auto score_range = [&](std::uint64_t begin, std::uint64_t end) {
-    for (std::uint64_t t = begin; t < end; ++t) scores[t] = search.score(parameters[t]);
+    for (std::uint64_t t = begin; t < end; ++t) {
+      check_interrupt();
+      scores[t] = search.score(parameters[t]);
+    }
   };
   if (threads <= 1 || count == 1) {
     score_range(0, count);

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "stratum/util/error.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::registry_support {
 
@@ -45,14 +46,23 @@ PointSet allocate_points(std::size_t n, std::size_t d) {
 void parallel_rows(std::uint64_t n, unsigned threads, const std::function<void(std::uint64_t, std::uint64_t)>& fill) {
   constexpr std::uint64_t chunk = 4096;
   if (threads <= 1 || n <= chunk) {
-    fill(0, n);
+    // In pieces, so that a stop request (stratum/util/interrupt.hpp) is seen
+    // between them: rows are independent, the result is the same.
+    constexpr std::uint64_t piece = std::uint64_t{1} << 18;
+    for (std::uint64_t first = 0; first < n; first += piece) {
+      if (first > 0) check_interrupt();  // not before the first: a small fill never throws it
+      fill(first, std::min(n, first + piece));
+    }
     return;
   }
   oneapi::tbb::task_arena arena(static_cast<int>(threads));
   arena.execute([&] {
     oneapi::tbb::parallel_for(
         oneapi::tbb::blocked_range<std::uint64_t>(0, n, chunk),
-        [&](const oneapi::tbb::blocked_range<std::uint64_t>& range) { fill(range.begin(), range.end()); },
+        [&](const oneapi::tbb::blocked_range<std::uint64_t>& range) {
+          check_interrupt();
+          fill(range.begin(), range.end());
+        },
         oneapi::tbb::simple_partitioner());
   });
 }

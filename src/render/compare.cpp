@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "image_plugin.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
@@ -18,6 +19,7 @@
 #include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/util/interrupt.hpp"
 
 namespace stratum::render {
 
@@ -321,7 +323,8 @@ Image reference_image(const Scene& scene, const std::string& scene_key, const Re
   io::OutputFile* picture = entry.add("cache", path);
   io::OutputFile* meta = entry.add("cache", metadata_sibling(path));
   entry.prepare();
-  Image image = render(scene, reference_settings(settings, spp));
+  Image image = render(scene, reference_settings(settings, spp), {}, &interrupt_flag());
+  if (image.stopped) throw interrupted();  // nothing cached
   // Rounded to what the cache stores (32-bit floats), so a measurement
   // against a fresh reference equals one against its cached copy.
   for (double& v : image.rgb) v = static_cast<float>(v);
@@ -376,7 +379,8 @@ Image render_equal_time(const Accelerator& accelerator, const RenderSettings& se
     pass.passes = set_passes;
     pass.time_limit = progressive ? std::max(seconds - elapsed(), 1e-9) : 0;
     if (set > 0) pass.sampler.seed = hash64(settings.sampler.seed, set);
-    const Image image = render(accelerator, pass);
+    const Image image = render(accelerator, pass, {}, &interrupt_flag());
+    if (image.stopped) throw interrupted();
     const double n = image.samples;
     if (set == 0) {
       total = image;
@@ -448,6 +452,16 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
           "variance-dir", (std::filesystem::path(options.variance_dir) / file_name_for(index, configs[index].label)).string());
     variance_files.prepare();
   }
+  {  // the memory of a render, of an equal-time total and of one reference (an Image) per estimand
+    std::set<std::string> estimands;
+    for (const CompareConfig& config : configs)
+      estimands.insert(config.settings.integrator + "/" + std::to_string(config.settings.max_depth) +
+                       (config.settings.pixel_centers ? "/centres" : ""));
+    const double image_bytes = 6 * sizeof(double);  // per pixel: mean and variance, 3 channels
+    require_render_memory(scene.camera, image_bytes * double(1 + estimands.size()),
+                          "comparison (a render, its total and " + std::to_string(estimands.size()) + " reference image" +
+                              (estimands.size() == 1 ? ")" : "s)"));
+  }
   const Accelerator accelerator(scene);  // one BVH for every configuration
   std::map<std::string, Image> references;  // one per estimand (integrator)
   std::vector<CompareRow> rows;
@@ -466,7 +480,8 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
     }
     CompareRow row;
     Image image = options.equal_time > 0 ? render_equal_time(accelerator, config.settings, options.equal_time, &row.passes)
-                                         : render(accelerator, config.settings);
+                                         : render(accelerator, config.settings, {}, &interrupt_flag());
+    if (image.stopped) throw interrupted();
     row.label = config.label;
     row.samples = image.samples;
     row.mse = mean_squared_error(image, references[estimand]);

@@ -119,7 +119,9 @@ if has_render; then
   # --- SIGINT and SIGTERM during a long render -----------------------------------------
   mkdir "$tmp/render-signal"
   for signal in INT TERM; do
-    "$stratum" render --width 64 --height 64 --spp 16777216 --passes 1000000 -q -o "$tmp/render-signal/r.png" 2>/dev/null &
+    # A script's background commands start with SIGINT ignored: env gives it the default back, as at a terminal.
+    env --default-signal=INT "$stratum" render --width 64 --height 64 --spp 16777216 --passes 1000000 -q \
+      -o "$tmp/render-signal/r.png" 2>/dev/null &
     renderer=$!
     for _ in $(seq 200); do [ -n "$(hidden "$tmp/render-signal")" ] && break; sleep 0.05; done
     sleep 0.5

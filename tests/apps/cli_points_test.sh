@@ -49,7 +49,7 @@ expect_error "invalid n = -3" points --sampler halton -n -3
 expect_error "-n = abc: not a valid number" points --sampler halton -n abc
 expect_error "invalid d = 0" points --sampler halton -n 4 -d 0
 expect_error "invalid d = 2000" points --sampler halton -n 4 -d 2000
-expect_error "memory" points --sampler random -n 1000000000000000 -d 3
+expect_error "needs 21.3 PiB for 1000000000000000 x 3 points of random, " points --sampler random -n 1000000000000000 -d 3
 expect_error "format" points --sampler halton -n 4 --format xls
 expect_error "randomize" points --sampler halton -n 4 --randomize shuffle
 # sobol's bits (scipy's Sobol bits): two digits of the LMS-scrambled points, from a spec or -p.

@@ -59,6 +59,23 @@ TEST(ReadPointsStrict, SkipsCommentsAndBlankLinesAndAcceptsCrlf) {
   std::filesystem::remove_all(dir);
 }
 
+// Found by fuzz_points (docs/fuzzing.md): a line of a vertical tab or form
+// feed was not blank to the reader but held no field, so it became a point
+// of 0 values (d = 0), and a later line reset d, leaving the set's last
+// coordinates uninitialized.
+TEST(ReadPointsStrict, AWhitespaceOnlyLineIsBlank) {
+  const auto dir = scratch("whitespace_lines");
+  write_text(dir / "p.txt", "\v\n0.5 0.25\n\f \t\n0.25 0.75\n");
+  const PointSet points = io::read_points_strict(dir / "p.txt");
+  EXPECT_EQ(points.n, 2u);
+  EXPECT_EQ(points.d, 2u);
+  EXPECT_EQ(points(0, 0), 0.5);
+  EXPECT_EQ(points(1, 1), 0.75);
+  write_text(dir / "only.txt", "#1$#4.\n\v");
+  EXPECT_NE(error_reading(dir / "only.txt").find("holds no points"), std::string::npos) << error_reading(dir / "only.txt");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ReadPointsStrict, NamesTheLineOrRowAndColumnAtFault) {
   const auto dir = scratch("errors");
   const std::pair<std::string, std::string> cases[] = {

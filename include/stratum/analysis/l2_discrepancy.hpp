@@ -53,6 +53,12 @@ struct L2Options {
 /// and the kind is not L2-star or d > 3.
 double l2_discrepancy_squared(L2Kind kind, const PointView& points, const L2Options& options = {});
 
+/// Bytes l2_discrepancy_squared allocates besides the points (the pairwise
+/// formula's two column copies; the fast one's sort keys, sorted columns and
+/// merge buffers or Fenwick trees); it refuses (stratum::memory_error)
+/// when they are not available (stratum/memory.hpp).
+double l2_working_bytes(L2Kind kind, std::size_t n, std::size_t d, const L2Options& options = {});
+
 /// The L2-star pair sum Σ_{i,j} Π_k (1 − max(x_ik, x_jk)) in O(N log^(d−1) N)
 /// for d ≤ 3 (d = 1: sort; d = 2: sort by x, Fenwick tree over y ranks;
 /// d = 3: divide and conquer over x, sweep over y, Fenwick tree over z;

@@ -50,6 +50,10 @@ struct MeasureInfo {
   /// largest d), throwing stratum::invalid_argument that says which method can.
   std::function<void(const PointView&, const MeasureRequest&)> validate;
   std::function<MeasureResult(const PointView&, const MeasureRequest&)> compute;
+  /// Bytes compute allocates besides the points, for n × d points (the
+  /// memory guard, stratum/memory.hpp: a command that generates the points
+  /// checks both before it starts); empty where it is small.
+  std::function<double(std::size_t n, std::size_t d, const MeasureRequest&)> working_bytes;
 };
 
 /// Every measure, in a stable order.
@@ -62,6 +66,10 @@ const MeasureInfo& find_measure(std::string_view name);
 /// message names the row and column), the dimension and the params, then
 /// computes. The one entry point the faces call.
 MeasureResult compute_measure(std::string_view name, const PointView& points, const MeasureRequest& request);
+
+/// Refuses (stratum::memory_error) unless the n × d points and what the
+/// measure `name` allocates for them fit in memory: before they are generated.
+void require_measure_memory(std::string_view name, std::size_t n, std::size_t d, const MeasureRequest& request);
 
 /// Throws invalid_argument naming row and column of the first coordinate
 /// that is not finite or not in [0,1], or if n < 2 or d < 1.

@@ -96,6 +96,20 @@ class OutputGroup {
 /// programs, not libraries loaded into another's process).
 void install_signal_cleanup();
 
+/// While one is alive, in a program that called install_signal_cleanup, the
+/// first SIGINT asks the work to stop (stratum::request_interrupt, see
+/// stratum/util/interrupt.hpp) instead of ending the process, so that a
+/// command can write what it has done (a render its partial image); a second
+/// SIGINT removes the staging files and ends the process at once, as without
+/// it. Constructing one forgets an earlier request.
+class StopOnInterrupt {
+ public:
+  StopOnInterrupt();
+  StopOnInterrupt(const StopOnInterrupt&) = delete;
+  StopOnInterrupt& operator=(const StopOnInterrupt&) = delete;
+  ~StopOnInterrupt();
+};
+
 /// Writes to stdout (after what C and C++ streams hold) through a stream
 /// whose every write is checked; throws std::runtime_error with the OS error.
 void write_stdout(const std::function<void(std::ostream&)>& body);

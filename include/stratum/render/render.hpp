@@ -38,7 +38,13 @@ struct RenderSettings {
 /// of the estimate's mean (for z-tests and variance images).
 struct Image {
   int width = 0, height = 0;
-  std::uint32_t samples = 0;   ///< samples per pixel actually taken
+  std::uint32_t samples = 0;   ///< samples per pixel actually taken (in every pixel)
+  std::uint32_t passes = 0;    ///< passes completed
+  /// A stop (Ctrl-C) ended the render before its last pass; `partial_pass`
+  /// of its tiles had also finished the pass it cut short (their pixels
+  /// average those samples too; tiles not rendered at all are black).
+  bool stopped = false;
+  double partial_pass = 0;
   std::vector<double> rgb;     ///< width·height·3, row-major, top row first
   std::vector<double> variance;  ///< width·height·3: variance of each channel's mean
   double seconds = 0;
@@ -48,9 +54,18 @@ struct Image {
 /// draw light_samples points per shading point); throws stratum::invalid_argument.
 void validate_settings(const RenderSettings& settings);
 
+/// Bytes a render of `camera`'s image allocates (96 per pixel: the sums of
+/// L and L², then the Image's mean and variance); render() refuses
+/// (stratum::memory_error, stratum/memory.hpp) when they are not available.
+double render_working_bytes(const Camera& camera);
+/// Refuses unless a render and `extra_per_pixel` more bytes per pixel (a
+/// comparison's references) are available; `what` is for the message.
+void require_render_memory(const Camera& camera, double extra_per_pixel, const std::string& what);
+
 /// Renders. `progress(done_passes, total_passes, seconds)` is called after
-/// each pass; `stop` (e.g. set by SIGINT) ends the render after the current
-/// pass. Same seed and settings: the same image for any thread count.
+/// each pass; `stop` (e.g. stratum::interrupt_flag(), set by Ctrl-C) ends
+/// the render within the tile each thread is on (in a distributed job: after
+/// the current pass), see Image::stopped. Same seed and settings: the same image for any thread count.
 Image render(const Scene& scene, const RenderSettings& settings,
              const std::function<void(std::uint32_t, std::uint32_t, double)>& progress = {},
              const std::atomic<bool>* stop = nullptr);

@@ -1,0 +1,33 @@
+"""The memory guard through Python: a request just above STRATUM_MEMORY_LIMIT
+raises MemoryError naming the size needed and what is available (before
+anything is allocated); one at the limit runs."""
+import numpy as np
+import pytest
+
+import stratum
+
+
+def test_points_just_above_the_limit_raise_memory_error(monkeypatch):
+    monkeypatch.setenv("STRATUM_MEMORY_LIMIT", "63999")  # 1000 x 8 doubles are 64000 bytes
+    with pytest.raises(MemoryError, match=r"needs 62\.5 KiB for 1000 x 8 points of random, 62\.5 KiB available"):
+        stratum.points("random", 1000, 8)
+    monkeypatch.setenv("STRATUM_MEMORY_LIMIT", "64000")
+    assert stratum.points("random", 1000, 8).shape == (1000, 8)
+
+
+def test_the_l2_measure_counts_its_buffers(monkeypatch):
+    x = stratum.points("sobol", 1000, 1)
+    monkeypatch.setenv("STRATUM_MEMORY_LIMIT", "23999")  # the fast L2-star needs 24 bytes per point in d = 1
+    with pytest.raises(MemoryError, match="needs 23.4 KiB for the L2 discrepancy of 1000 x 1 points"):
+        stratum.measure(x, "l2-star")
+    monkeypatch.setenv("STRATUM_MEMORY_LIMIT", "24000")
+    assert stratum.measure(x, "l2-star")["value"] > 0
+
+
+@pytest.mark.skipif(not hasattr(stratum, "comparisons"), reason="built without the renderer")
+def test_a_render_counts_its_buffers(monkeypatch):
+    monkeypatch.setenv("STRATUM_MEMORY_LIMIT", str(96 * 64 * 64 - 1))
+    with pytest.raises(MemoryError, match="needs 384.0 KiB for a 64x64 render"):
+        stratum.render(width=64, height=64, spp=1)
+    monkeypatch.setenv("STRATUM_MEMORY_LIMIT", str(96 * 64 * 64))
+    assert stratum.render(width=64, height=64, spp=1).shape == (64, 64, 3)
