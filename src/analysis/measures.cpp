@@ -47,7 +47,9 @@ void check_unit_cube(const PointView& points) {
 void require_measure_memory(std::string_view name, std::size_t n, std::size_t d, const MeasureRequest& request) {
   const MeasureInfo& info = find_measure(name);
   const double points = double(n) * double(d) * sizeof(double);
-  const double working = info.working_bytes ? info.working_bytes(n, d, request) : 0.0;
+  MeasureRequest bound = request;
+  bound.values = bind_params(info.name, info.params, request.params, "measure-param");
+  const double working = info.working_bytes ? info.working_bytes(n, d, bound) : 0.0;
   require_memory(points + working, std::to_string(n) + " x " + std::to_string(d) + " points and their " + info.name +
                                        " measure");
 }
