@@ -38,8 +38,11 @@ def interrupt_child(call, tmp_path):
         print("finished", flush=True)
     """)
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
+    # SIGINT at its default in the child even when this run inherited it ignored
+    # (a background job): Python installs KeyboardInterrupt only over SIG_DFL.
     child = subprocess.Popen([sys.executable, "-c", code], cwd=tmp_path, env=env, stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
+                             stderr=subprocess.PIPE, text=True,
+                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         assert child.stdout.readline().strip() == "calling"
         try:
