@@ -4,16 +4,24 @@
 
 #include <cmath>
 #include <limits>
+#include <variant>
 
 namespace stratum::cli {
 
 static nlohmann::json bound(double value) { return std::isinf(value) ? nlohmann::json(nullptr) : nlohmann::json(value); }
 
+/// A default as the JSON value it reads as (30, false, [0.5], "gray"), the
+/// same as Python's describe gives it.
+static nlohmann::json typed_default(const Param& param) {
+  if (param.default_value.empty()) return nullptr;
+  return std::visit([](const auto& value) { return nlohmann::json(value); }, parse_param(param, param.default_value));
+}
+
 nlohmann::json param_json(const Param& param) {
   nlohmann::json out = {{"name", param.name},
                         {"type", std::string(type_name(param.type))},
                         {"description", param.description},
-                        {"default", param.default_value.empty() ? nlohmann::json(nullptr) : nlohmann::json(param.default_value)}};
+                        {"default", typed_default(param)}};
   const bool list = param.type == ParamType::integers || param.type == ParamType::reals;
   const bool numeric = list || param.type == ParamType::integer || param.type == ParamType::real;
   if (numeric)

@@ -136,12 +136,13 @@ static bool parse_integer_text(std::string_view text, std::int64_t& value) {
   return error == std::errc() && ptr == end;
 }
 
-/// Whole-text finite real; under- and overflow (1e-320, 1e999) are refused
-/// rather than rounded to 0 or inf.
+/// Whole-text finite real; under- and overflow (1e-400, 1e999) are refused
+/// rather than rounded to 0 or inf, and so are subnormal results (1e-320),
+/// which keep too few digits to read back as what was written.
 static bool parse_real_text(std::string_view text, double& value) {
   const char* end = text.data() + text.size();
   const auto [ptr, error] = std::from_chars(text.data(), end, value, std::chars_format::general);
-  return error == std::errc() && ptr == end && std::isfinite(value);
+  return error == std::errc() && ptr == end && std::isfinite(value) && std::fpclassify(value) != FP_SUBNORMAL;
 }
 
 /// Items between separators; a list whose separator is not ',' takes ','
