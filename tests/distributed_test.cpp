@@ -117,4 +117,28 @@ TEST(Distributed, DealtItemsAreRoundRobinAndGatheredIntoPlace) {
   EXPECT_EQ(stratum::distributed::dealt(1).size(), 0u);  // fewer items than processes: rank 1 has none
 }
 
+TEST(Distributed, DealtItemsOfVariableWidthAreGatheredIntoPlace) {
+  // The render's tile rows: the last is short. 5 items of widths 3, 3, 3, 3, 1 on 2 processes, seen from rank 0.
+  FillingGroup group(0, 2);
+  Installed installed(&group);
+  const std::vector<std::size_t> offsets = {0, 3, 6, 9, 12, 13};
+  const auto offset = [&](std::size_t i) { return offsets[i]; };
+  std::vector<double> data(13, -1.0);
+  for (std::size_t item : {0u, 2u, 4u})  // rank 0's
+    for (std::size_t at = offsets[item]; at < offsets[item + 1]; ++at) data[at] = double(at);
+  stratum::distributed::gather_dealt(data, 5, offset);
+  // Packed: rank 0's items 0, 2, 4 at 0–2, 3–5, 6; rank 1's items 1, 3 at 7–9, 10–12.
+  for (std::size_t at = 0; at < 13; ++at) {
+    const bool mine = at < 3 || (at >= 6 && at < 9) || at == 12;
+    if (mine) {
+      EXPECT_EQ(data[at], double(at)) << at;
+    }
+  }
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_EQ(data[3 + j], 1000.0 + double(7 + j));   // item 1
+    EXPECT_EQ(data[9 + j], 1000.0 + double(10 + j));  // item 3
+  }
+  EXPECT_THROW(stratum::distributed::gather_dealt(data, 4, offset), std::logic_error);
+}
+
 }  // namespace

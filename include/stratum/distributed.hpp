@@ -116,27 +116,42 @@ struct Dealt {
 };
 inline Dealt dealt(std::size_t count) { return {std::size_t(rank()), std::size_t(size()), count}; }
 
-/// After this process filled its dealt items of `data` (`count` items of
-/// equal width, in their places), fills in the other processes' items.
-inline void gather_dealt(std::span<double> data, std::size_t count) {
+/// After this process filled its dealt items of `data`, item i occupying
+/// [offset(i), offset(i + 1)) (offset(count) = data.size()), fills in the
+/// other processes' items.
+inline void gather_dealt(std::span<double> data, std::size_t count,
+                         const std::function<std::size_t(std::size_t)>& offset) {
   Group* group = detail::installed_group.load();
   if (!group || group->size() == 1 || count == 0) return;
-  if (data.size() % count != 0) throw std::logic_error("gather_dealt: items of unequal width");
-  const std::size_t width = data.size() / count, processes = std::size_t(group->size());
+  if (offset(count) != data.size()) throw std::logic_error("gather_dealt: the items do not cover the data");
+  const std::size_t processes = std::size_t(group->size()), me = std::size_t(group->rank());
+  const auto width = [&](std::size_t i) { return offset(i + 1) - offset(i); };
   // Packed by process (process r's items r, r + K, … side by side), gathered, unpacked.
   std::vector<Share> segments(processes);
   std::vector<double> packed(data.size());
   std::size_t at = 0;
   for (std::size_t r = 0; r < processes; ++r) {
     segments[r].begin = at;
-    for (std::size_t i = r; i < count; i += processes, at += width)
-      if (r == std::size_t(group->rank())) std::copy_n(data.data() + i * width, width, packed.data() + at);
+    for (std::size_t i = r; i < count; i += processes) {
+      if (r == me) std::copy_n(data.data() + offset(i), width(i), packed.data() + at);
+      at += width(i);
+    }
     segments[r].end = at;
   }
   group->gather(packed.data(), segments);
   for (std::size_t r = 0, from = 0; r < processes; ++r)
-    for (std::size_t i = r; i < count; i += processes, from += width)
-      std::copy_n(packed.data() + from, width, data.data() + i * width);
+    for (std::size_t i = r; i < count; i += processes) {
+      std::copy_n(packed.data() + from, width(i), data.data() + offset(i));
+      from += width(i);
+    }
+}
+
+/// The same for items of equal width (data.size() / count values each).
+inline void gather_dealt(std::span<double> data, std::size_t count) {
+  if (count == 0) return;
+  if (data.size() % count != 0) throw std::logic_error("gather_dealt: items of unequal width");
+  const std::size_t width = data.size() / count;
+  gather_dealt(data, count, [width](std::size_t i) { return i * width; });
 }
 
 /// Whether `flag` is true on any process: a decision every process must

@@ -70,10 +70,13 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, settings.threads);
   // Rows of tiles are a job's items: each process of a distributed job
-  // renders its share (every pixel is a pure function of its samples) and
-  // the rows are gathered after the last pass.
-  const distributed::Share rows = distributed::share(std::size_t(tiles_y));
-  const int first_tile = int(rows.begin) * tiles_x, last_tile = int(rows.end) * tiles_x;
+  // renders its rows (every pixel is a pure function of its samples) and
+  // the rows are gathered after the last pass. Rows are dealt round-robin,
+  // not in contiguous blocks: a scene's cost varies down the image (the
+  // light, the floor), and dealt rows give every process a like mix.
+  const distributed::Dealt rows = distributed::dealt(std::size_t(tiles_y));
+  const int my_tiles = int(rows.size()) * tiles_x;
+  const auto tile_of = [&](int local) { return int(rows[std::size_t(local / tiles_x)]) * tiles_x + local % tiles_x; };
   // A process alone checks `stop` per pixel, so that Ctrl-C ends a long pass
   // within a pixel's samples; the ranks of a distributed job stop together after a pass.
   const bool alone = distributed::size() == 1;
@@ -83,7 +86,8 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
   bool stopped = false;
   for (std::uint32_t pass = 0; pass < passes; ++pass) {
     const std::uint32_t first = std::uint64_t(spp) * pass / passes, last = std::uint64_t(spp) * (pass + 1) / passes;
-    tbb::parallel_for(first_tile, last_tile, [&](int t) {
+    tbb::parallel_for(0, my_tiles, [&](int local) {
+      const int t = tile_of(local);
       try {  // a stop seen inside the sampler's draws (check_interrupt) leaves the tile as it was, too
         PixelSampler sampler(prototype);  // per tile: its own per-pixel cache
         const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
@@ -127,8 +131,8 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
         if (!alone) throw;
       }
     });
-    const bool complete = std::all_of(tile_samples.begin() + first_tile, tile_samples.begin() + last_tile,
-                                      [&](std::uint32_t n) { return n == last; });
+    bool complete = true;
+    for (int local = 0; local < my_tiles; ++local) complete = complete && tile_samples[std::size_t(tile_of(local))] == last;
     if (!complete) {  // stopped within the pass (alone only)
       stopped = true;
       break;
@@ -144,8 +148,8 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
   }
   // Tile row r holds pixel rows [16r, min(16r + 16, height)): 3 sums each per pixel.
   const auto row_offset = [&](std::size_t r) { return 3 * std::size_t(width) * std::min<std::size_t>(tile * r, height); };
-  distributed::gather_shares({sum.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
-  distributed::gather_shares({sum2.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
+  distributed::gather_dealt({sum.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
+  distributed::gather_dealt({sum2.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
 
   Image image;
   image.width = width;
