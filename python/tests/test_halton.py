@@ -159,3 +159,24 @@ def test_hammersley_estimates_are_unbiased():
         f = np.array([np.mean(stratum.points("hammersley", 4, 2, seed=s, randomize=randomize)[:, 0] < 0.3)
                       for s in range(3000)])
         assert abs(f.mean() - 0.3) < 3.9 * f.std(ddof=1) / np.sqrt(len(f)), (randomize, f.mean())
+
+
+def test_radical_inverse_in_any_base():
+    """halton(bases=...): φ_b(i) in the given bases, the slide's radical inverse in any base."""
+    i = np.arange(200)
+
+    def phi(b, k):
+        x, f = 0.0, 1.0 / b
+        while k:
+            x += (k % b) * f
+            k //= b
+            f /= b
+        return x
+
+    for b in (3, 10, 12):
+        x = stratum.points("halton", 200, 1, randomize="none", bases=[b])[:, 0]
+        np.testing.assert_allclose(x, [phi(b, k) for k in i], rtol=0, atol=1e-15)
+    two = stratum.points("halton(bases=6,7)", 64, 2, randomize="none")
+    np.testing.assert_allclose(two[:, 1], [phi(7, k) for k in range(64)], rtol=0, atol=1e-15)
+    with pytest.raises(stratum.InvalidArgument, match=r"invalid bases = \(1 value\): give one base per dimension"):
+        stratum.points("halton", 4, 2, bases=[3])

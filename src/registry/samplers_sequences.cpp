@@ -22,9 +22,6 @@
 #include <algorithm>
 #include <cstdint>
 
-#if defined(__linux__)
-#endif
-
 #include "families.hpp"
 #include "stratum/randomizers/base2.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
@@ -33,6 +30,7 @@
 #include "stratum/randomizers/owen_base_b.hpp"
 #include "stratum/sequences/faure.hpp"
 #include "stratum/sequences/halton.hpp"
+#include "stratum/sequences/radical_inverse.hpp"
 #include "support.hpp"
 
 namespace stratum::registry_families {
@@ -47,10 +45,6 @@ static std::vector<std::uint32_t> prime_bases(unsigned count) {
   return bases;
 }
 
-/// Asks Linux for transparent huge pages on a large fresh buffer before its
-/// first touch: 4 KiB page faults (and their zeroing) otherwise cost more
-/// than computing tabulated points (35 ms against 9 ms for 2^20 × 8
-/// doubles). A hint only; it belongs in allocate_points for every sampler.
 /// Fills an n × d PointSet column by column within blocks of rows, so that
 /// a tabulated randomizer writes runs of consecutive indices;
 /// column(first_row, rows, dim, out) writes out[k·d] for k < rows. Rows
@@ -82,28 +76,53 @@ static PointSet fill_each(std::uint64_t n, unsigned d, unsigned threads, const S
   });
 }
 
+/// Halton's bases: the `bases` parameter when given (one per dimension),
+/// else the first d primes.
+static std::vector<std::uint32_t> halton_bases(const SamplerRequest& request) {
+  if (!request.values.has("bases")) return prime_bases(request.d);
+  const auto& given = request.values.integers("bases");
+  return {given.begin(), given.end()};
+}
+
+static void validate_halton(const SamplerRequest& request) {
+  if (!request.values.has("bases")) return;
+  const std::size_t count = request.values.integers("bases").size();
+  if (count != request.d)
+    throw invalid_argument("bases", "(" + std::to_string(count) + (count == 1 ? " value)" : " values)"),
+                           "give one base per dimension: d = " + std::to_string(request.d));
+}
+
 /// Halton points with the request's randomizer, indices start .. start+n−1.
 static PointSet generate_halton(const SamplerRequest& request) {
   const std::uint64_t n = *request.n, start = request.start;
   const unsigned d = request.d;
   const std::string& randomize = request.randomize;
+  const std::vector<std::uint32_t> bases = halton_bases(request);
   const auto tabulated = [&](const auto& scrambler) {
     return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
       scrambler.fill(start + row, rows, j, out, d);
     });
   };
-  if (randomize == "permute") return tabulated(RandomDigitPermutations(request.seed, prime_bases(d), start + n - 1));
-  if (randomize == "xor") return tabulated(BaseBDigitalShift(request.seed, prime_bases(d), start + n - 1));
+  if (randomize == "permute") return tabulated(RandomDigitPermutations(request.seed, bases, start + n - 1));
+  if (randomize == "xor") return tabulated(BaseBDigitalShift(request.seed, bases, start + n - 1));
   if (randomize == "owen") {
-    const BaseBOwenScrambler owen(request.seed, prime_bases(d));
+    const BaseBOwenScrambler owen(request.seed, bases);
     return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return owen.sample(start + i, j); });
   }
+  const CranleyPattersonRotation rotation(request.seed);
+  const bool rotate = randomize == "cp";
+  if (request.values.has("bases")) {  // radical inverses in the given bases
+    std::vector<std::uint64_t> reciprocals(d);
+    for (unsigned j = 0; j < d; ++j) reciprocals[j] = radical_inverse_reciprocal(bases[j]);
+    return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) {
+      const double x = radical_inverse(bases[j], start + i, reciprocals[j]);
+      return rotate ? rotation(x, j) : x;
+    });
+  }
   const Halton halton(d);
-  if (randomize == "cp") {
-    const CranleyPattersonRotation rotation(request.seed);
+  if (rotate)
     return fill_each(n, d, request.threads,
                      [&](std::uint64_t i, unsigned j) { return rotation(halton.sample(start + i, j), j); });
-  }
   return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return halton.sample(start + i, j); });
 }
 
@@ -186,16 +205,19 @@ std::vector<SamplerInfo> sequences() {
   list.push_back({
       .name = "halton",
       .kind = "sequence",
-      .description = "Halton points: radical inverse in the d-th prime base (Halton 1960); by default scrambled "
-                     "by random digit permutations (Owen 2017, scipy's scramble=True)",
+      .description = "Halton points: radical inverse in the d-th prime base, or in the given bases (Halton 1960; "
+                     "d = 1, bases=b: van der Corput's sequence in base b); by default scrambled by random digit "
+                     "permutations (Owen 2017, scipy's scramble=True)",
       .min_dim = 1,
       .max_dim = Halton::max_dimensions,
       .properties = {"index-addressable", "progressive", "low-discrepancy",
                      "mixed-base elementary intervals (none, permute, owen, xor)"},
       .randomizers = radical_inverse_randomizers(),
       .counts = "any n >= 1",
-      .params = {},
-      .validate = nullptr,
+      .params = {params::integers("bases", "one radical-inverse base per dimension (default: the first d primes); "
+                                  "pairwise coprime bases give a low-discrepancy set, a repeated base a diagonal",
+                                  "", closed(2, digits_detail::max_base), Length{1, Halton::max_dimensions})},
+      .validate = validate_halton,
       .count = requested_count,
       .generate = generate_halton,
   });

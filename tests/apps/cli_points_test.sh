@@ -11,6 +11,10 @@ lines=$("$stratum" points --sampler halton -n 100 -d 3 | wc -l)
 [ "$lines" = 100 ] && ok || fail "points prints 100 lines, got $lines"
 fields=$("$stratum" points --sampler halton -n 5 -d 3 | head -1 | wc -w)
 [ "$fields" = 3 ] && ok || fail "points prints 3 columns, got $fields"
+# The radical inverse in any base: van der Corput in base 10 reads the index's digits backwards (123 -> 0.321).
+vdc=$("$stratum" points -s "halton(bases=10):none" -n 124 -d 1 | sed -n 124p)
+[ "$vdc" = 0.321 ] && ok || fail "halton(bases=10) point 123 is $vdc, not 0.321"
+expect_error "invalid bases = (1 value): give one base per dimension: d = 2" points -s halton -n 4 -d 2 -p bases=3
 first=$("$stratum" points --sampler halton -n 6 -d 1 --randomize none | sed -n 6p)
 [ "$first" = 0.625 ] && ok || fail "halton point 5 is 0.625, got $first"
 
