@@ -168,8 +168,8 @@ inline int chi2_tests_in_suite() {
 
 /// The level every χ² test of the family uses: Šidák at family α = 0.01 over
 /// the computed T, so the whole binary raises a false alarm with probability
-/// at most 1%; per test about 0.01/T (T = 31 today, 3.24e-4: printed by
-/// WarpChi2Family.CountIsComputedFromTheRegisteredTests).
+/// at most 1%; per test about 0.01/T (T = 41 today with the renderer, 2.45e-4;
+/// 31 without it; printed by WarpChi2Family.CountIsComputedFromTheRegisteredTests).
 inline double chi2_alpha() { return sidak_alpha(0.01, chi2_tests_in_suite()); }
 
 /// The property a family member records its p-value under (visible in
