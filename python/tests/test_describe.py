@@ -9,13 +9,17 @@ import pytest
 
 import stratum
 
+import build_parts
+
 # The CLI of the same build: <build>/python/stratum/ beside <build>/bin/stratum.
 STRATUM_EXE = os.path.join(os.path.dirname(stratum.__file__), os.pardir, os.pardir, "bin", "stratum")
 
 
 def cli_describe_all():
     if not os.access(STRATUM_EXE, os.X_OK):
-        pytest.skip("no stratum executable beside the package (an installed package)")
+        # In a build tree with the CLI on (STRATUM_BUILD_APPS) a missing executable is a failure, not a skip.
+        assert not build_parts.cache_option("STRATUM_BUILD_APPS"), f"{STRATUM_EXE} is missing: build the stratum target"
+        pytest.skip("no stratum executable beside the package (an installed package, or a build without the CLI)")
     out = subprocess.run([STRATUM_EXE, "describe", "--all", "--json"], check=True, capture_output=True, text=True)
     return json.loads(out.stdout)
 

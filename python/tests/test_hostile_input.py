@@ -11,7 +11,9 @@ import pytest
 
 import stratum
 
-pytestmark = pytest.mark.skipif(not hasattr(stratum, "comparisons"), reason="built without the renderer")
+from build_parts import NO_RENDERER, RENDERER
+
+pytestmark = pytest.mark.skipif(not RENDERER, reason=NO_RENDERER)
 
 
 def run_python(code, tmp_path, timeout=120):

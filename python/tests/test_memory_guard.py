@@ -6,6 +6,8 @@ import pytest
 
 import stratum
 
+from build_parts import NO_RENDERER, RENDERER
+
 
 def test_points_just_above_the_limit_raise_memory_error(monkeypatch):
     monkeypatch.setenv("STRATUM_MEMORY_LIMIT", "63999")  # 1000 x 8 doubles are 64000 bytes
@@ -24,7 +26,7 @@ def test_the_l2_measure_counts_its_buffers(monkeypatch):
     assert stratum.measure(x, "l2-star")["value"] > 0
 
 
-@pytest.mark.skipif(not hasattr(stratum, "comparisons"), reason="built without the renderer")
+@pytest.mark.skipif(not RENDERER, reason=NO_RENDERER)
 def test_a_render_counts_its_buffers(monkeypatch):
     monkeypatch.setenv("STRATUM_MEMORY_LIMIT", str(96 * 64 * 64 - 1))
     with pytest.raises(MemoryError, match="needs 384.0 KiB for a 64x64 render"):

@@ -5,7 +5,9 @@ import pytest
 
 import stratum
 
-pytestmark = pytest.mark.skipif(not hasattr(stratum, "report_sections"), reason="built without the renderer")
+from build_parts import NO_RENDERER, RENDERER
+
+pytestmark = pytest.mark.skipif(not RENDERER, reason=NO_RENDERER)
 
 
 def test_sections_listed_in_lecture_order():

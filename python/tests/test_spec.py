@@ -8,6 +8,8 @@ import pytest
 
 import stratum
 
+from build_parts import NO_RENDERER, RENDERER
+
 
 def test_points_take_specs_and_their_parts_alike():
     a = stratum.points("sobol:owen", 64, 2, seed=3)
@@ -106,8 +108,8 @@ def test_one_thread_rule_zero_is_every_core():
 
 
 def test_render_takes_specs_without_parameters():
-    if not hasattr(stratum._stratum, "render"):
-        pytest.skip("the renderer is not built")
+    if not RENDERER:
+        pytest.skip(NO_RENDERER)
     a = stratum.render(width=8, height=8, spp=4, sampler="sobol:owen", seed=1, passes=1)
     b = stratum.render(width=8, height=8, spp=4, sampler="sobol", randomize="owen", seed=1, passes=1)
     np.testing.assert_array_equal(a, b)

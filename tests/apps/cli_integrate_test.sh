@@ -81,7 +81,9 @@ expect_error "invalid randomize = owen" integrate --integrand disk --sampler ran
 expect_error "invalid runs = 0" integrate --integrand disk -n 10 --runs 0
 # The default --n works for every integrand and sampler pair of the registry's
 # integrands with random and jittered: jittered (2D) skips the non-squares and says so.
-for integrand in $("$stratum" integrate --list --json | $py -c 'import json,sys; print(" ".join(e["name"] for e in json.load(sys.stdin)["integrands"]))'); do
+integrands=$("$stratum" integrate --list --json | $py -c 'import json,sys; print(" ".join(e["name"] for e in json.load(sys.stdin)["integrands"]))')
+[ "$(echo "$integrands" | wc -w)" -ge 5 ] && ok || fail "integrate --list --json: integrands '$integrands'"  # an empty listing must not pass
+for integrand in $integrands; do
   "$stratum" converge --integrand "$integrand" --samplers random,jittered --runs 2 --json >"$tmp/d.json" && ok || fail "converge default --n for $integrand"
 done
 $py -c "

@@ -39,7 +39,7 @@ refused "needs 22.8 KiB for 2 Sobol' runs at once of up to 729 x 2 points, 22.8 
   study dimension --dims 1:2 --n 16:1024 --threads 2
 limited 23328 study dimension --dims 1:2 --n 16:1024 --threads 2 && ok || fail "study dimension under the limit: $(cat "$tmp/err")"
 
-if "$stratum" render --help >/dev/null 2>&1; then
+if has_render; then
   # render: 96 bytes per pixel (64 x 64 = 393216 bytes)
   refused "needs 384.0 KiB for a 64x64 render (its sums, mean and variance per pixel)" 393215 \
     render --width 64 --height 64 --spp 1 -q -o "$tmp/r.png"

@@ -10,7 +10,6 @@ mkdir -p "$full"
 trap 'umount "$full" 2>/dev/null; rm -rf "$tmp"' EXIT
 
 hidden() { ls -A "$1" | grep '^\.' || true; }  # staging or temporary files left in folder $1
-has_render() { "$stratum" render --help >/dev/null 2>&1; }
 
 # --- points: special files, links, permissions, hard links --------------------
 "$stratum" points -s halton -n 16 >"$tmp/expected.txt" || fail "points to stdout"

@@ -25,7 +25,7 @@ run_with() {
 # patterns (specs too, but no -p/--randomize, and not one of its own five: jittered, poisson-disk(periodic=1)).
 with_params="points discrepancy local-discrepancy koksma-hlawka spectrum warp integrate converge"
 renderer=false
-if "$stratum" render --help >/dev/null 2>&1; then renderer=true; fi
+if has_render; then renderer=true; fi
 options=$with_params  # render takes specs without parameters (below)
 $renderer && options="$options render"
 commands="$options mitchell"

@@ -85,6 +85,7 @@ TEST(Registry, MissingNIsAnErrorUnlessRadiusDrives) {
 // same bits with 1 and 2 threads.
 TEST(Registry, EverySamplerFillsTheUnitCubeIdenticallyOnOneAndTwoThreads) {
   for (const auto& s : samplers()) {
+    int counts_taken = 0;  // a sampler that takes none of the counts would be skipped silently
     for (std::uint64_t n : {1ull, 16ull, 64ull, 256ull, 10000ull, 16384ull}) {
       auto request = request_of(n, std::clamp(3u, s.min_dim, s.max_dim));
       request.seed = 7;
@@ -93,6 +94,7 @@ TEST(Registry, EverySamplerFillsTheUnitCubeIdenticallyOnOneAndTwoThreads) {
       } catch (const invalid_argument&) {
         continue;  // this sampler does not take this n
       }
+      ++counts_taken;
       const PointSet one = generate_points(s.name, request);
       request.threads = 2;
       const PointSet two = generate_points(s.name, request);
@@ -105,6 +107,7 @@ TEST(Registry, EverySamplerFillsTheUnitCubeIdenticallyOnOneAndTwoThreads) {
       EXPECT_EQ(0, std::memcmp(one.data.get(), two.data.get(), one.n * one.d * sizeof(double)))
           << s.name << " differs between 1 and 2 threads at n=" << n;
     }
+    EXPECT_GT(counts_taken, 0) << s.name << " takes none of the counts tried: add one it takes";
   }
 }
 

@@ -30,21 +30,30 @@ Vec3 incident(double theta_degrees) {
   return {std::sin(t), 0, std::cos(t)};
 }
 
-TEST(RenderBsdf, GlossySamplingMatchesItsPdf) {
-  // Four χ² tests (two exponents × two incidences), Šidák-corrected to a family α = 0.01.
-  const double alpha = testing::sidak_alpha(0.01, 4);
-  for (double exponent : {3.0, 20.0})
-    for (double theta : {0.0, 50.0}) {
-      const Bsdf bsdf(glossy(exponent), {0, 0, 1}, incident(theta));
-      const auto sample = [&](const double* u, double* out) {
-        const Vec3 w = bsdf.sample({u[0], u[1]}).wi;
-        out[0] = w.x, out[1] = w.y, out[2] = w.z;
-      };
-      const auto pdf = [&](const double* p) { return bsdf.pdf({p[0], p[1], p[2]}); };
-      const auto result = testing::chi2_test(sample, pdf, testing::Domain::directions(-1, 1, 40, 32));
-      EXPECT_GT(result.p_value, alpha) << "exponent " << exponent << ", theta " << theta << "\n" << result.table;
-    }
+// One test of the χ² family (tests/warps/chi2.hpp: Šidák at family α = 0.01)
+// per exponent and incidence.
+struct Lobe {
+  const char* name;
+  double exponent, theta_degrees;
+};
+void PrintTo(const Lobe& c, std::ostream* out) { *out << c.name; }  // ctest's names show the case
+
+class RenderBsdfGlossyChi2 : public testing::Chi2Fixture<::testing::TestWithParam<Lobe>> {};
+
+TEST_P(RenderBsdfGlossyChi2, SamplingMatchesItsPdf) {
+  const Bsdf bsdf(glossy(GetParam().exponent), {0, 0, 1}, incident(GetParam().theta_degrees));
+  const auto sample = [&](const double* u, double* out) {
+    const Vec3 w = bsdf.sample({u[0], u[1]}).wi;
+    out[0] = w.x, out[1] = w.y, out[2] = w.z;
+  };
+  const auto pdf = [&](const double* p) { return bsdf.pdf({p[0], p[1], p[2]}); };
+  testing::expect_chi2(testing::chi2_test(sample, pdf, testing::Domain::directions(-1, 1, 40, 32)), GetParam().name);
 }
+
+INSTANTIATE_TEST_SUITE_P(Lobes, RenderBsdfGlossyChi2,
+                         ::testing::Values(Lobe{"exponent 3, theta 0", 3, 0}, Lobe{"exponent 3, theta 50", 3, 50},
+                                           Lobe{"exponent 20, theta 0", 20, 0}, Lobe{"exponent 20, theta 50", 20, 50}),
+                         [](const auto& info) { return testing::chi2_param_name(info.param.name); });
 
 TEST(RenderBsdf, SamplesCarryTheirPdfAndWeight) {
   const Vec3 n = normalize(Vec3{0.3, -0.2, 1});

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -27,9 +28,6 @@ namespace stratum::render {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
-// The χ² tests of this file: one per light strategy, at the Šidák level for family α = 0.01.
-constexpr int chi2_tests_here = 3;
 
 /// A lamp disk of radius r centred at `center` with unit normal (0, −1, 0)
 /// unless given; `extra` adds JSON keys (motion, segments).
@@ -153,41 +151,68 @@ double disk_density(Vec3 c, Vec3 normal, double r, Vec3 x, Vec3 w) {
   return t * t / (-along * pi * r * r);
 }
 
-TEST(RenderExactDisk, LightDirectionsFollowTheAreaDensityInSolidAngle) {
-  // A tilted, moving disk seen off-axis at time 0.5.
-  const Vec3 normal = normalize(Vec3{-0.3, -1, 0.2});
-  const Scene scene = disk_scene(0.8, {1, 2.5, 0.5}, R"(, "motion": [1, 0, 0])", "[-0.3, -1, 0.2]");
-  const Vec3 x{0.3, 0, -0.2}, n{0, 1, 0}, center{1.5, 2.5, 0.5};
-  const Vec3 axis = normalize(center - x);
-  double z_min = 1;  // the cap around the axis that holds the disk
-  const Frame rim(normal);
-  for (int k = 0; k < 3600; ++k) {
-    const double phi = 2 * pi * k / 3600;
-    z_min = std::min(z_min, dot(normalize(center + 0.8 * (std::cos(phi) * rim.s + std::sin(phi) * rim.t) - x), axis));
+/// A tilted, moving disk seen off-axis at time 0.5, and the cap around the
+/// axis towards it that holds the disk (the χ² bins).
+struct MovingDiskView {
+  Vec3 normal = normalize(Vec3{-0.3, -1, 0.2});
+  Scene scene = disk_scene(0.8, {1, 2.5, 0.5}, R"(, "motion": [1, 0, 0])", "[-0.3, -1, 0.2]");
+  Vec3 x{0.3, 0, -0.2}, n{0, 1, 0}, center{1.5, 2.5, 0.5};
+  Vec3 axis = normalize(center - x);
+  double z_min = cap_z_min();
+  Frame frame{axis};
+
+  double cap_z_min() const {
+    double z = 1;
+    const Frame rim(normal);
+    for (int k = 0; k < 3600; ++k) {
+      const double phi = 2 * pi * k / 3600;
+      z = std::min(z, dot(normalize(center + 0.8 * (std::cos(phi) * rim.s + std::sin(phi) * rim.t) - x), axis));
+    }
+    return z - 0.01;
   }
-  z_min -= 0.01;
-  const Frame frame(axis);
-  const auto pdf = [&](const double* p) { return disk_density(center, normal, 0.8, x, frame.to_world({p[0], p[1], p[2]})); };
-  // Every strategy draws this density (solid-angle and projected-solid-angle
-  // fall back to the area sample): one χ² test each, independent seeds.
-  std::uint64_t seed = 23;
-  for (LightStrategy strategy : {LightStrategy::area, LightStrategy::solid_angle, LightStrategy::projected_solid_angle}) {
-    const auto sample = [&](const double* u, double* out) {
-      const auto s = sample_light(scene, scene.lights[0], x, n, 0.5, {u[0], u[1]}, strategy);
-      if (!s) {
-        out[0] = out[1] = 0, out[2] = -2;  // in no bin: counted as outside
-        return;
-      }
-      out[0] = dot(s->wi, frame.s), out[1] = dot(s->wi, frame.t), out[2] = dot(s->wi, frame.n);
-    };
-    testing::Chi2Options options;
-    options.samples = 200000;
-    options.seed = seed++;
-    options.subdivisions = 8;
-    const auto result = testing::chi2_test(sample, pdf, testing::Domain::directions(z_min, 1, 12, 24), options);
-    EXPECT_GT(result.p_value, testing::sidak_alpha(0.01, chi2_tests_here)) << int(strategy) << "\n" << result.table;
-  }
-  // Each sample carries that density, and light_pdf of the hit it leads to agrees (MIS).
+};
+
+// Every strategy draws the area density (solid-angle and projected-solid-angle
+// fall back to the area sample): one test of the χ² family (tests/warps/chi2.hpp:
+// Šidák at family α = 0.01) per strategy, each with its own seed.
+struct DiskStrategy {
+  const char* name;
+  LightStrategy strategy;
+  std::uint64_t seed;
+};
+void PrintTo(const DiskStrategy& c, std::ostream* out) { *out << c.name; }  // ctest's names show the case
+
+class RenderExactDiskChi2 : public testing::Chi2Fixture<::testing::TestWithParam<DiskStrategy>> {};
+
+TEST_P(RenderExactDiskChi2, LightDirectionsFollowTheAreaDensityInSolidAngle) {
+  const MovingDiskView v;
+  const auto pdf = [&](const double* p) { return disk_density(v.center, v.normal, 0.8, v.x, v.frame.to_world({p[0], p[1], p[2]})); };
+  const auto sample = [&](const double* u, double* out) {
+    const auto s = sample_light(v.scene, v.scene.lights[0], v.x, v.n, 0.5, {u[0], u[1]}, GetParam().strategy);
+    if (!s) {
+      out[0] = out[1] = 0, out[2] = -2;  // in no bin: counted as outside
+      return;
+    }
+    out[0] = dot(s->wi, v.frame.s), out[1] = dot(s->wi, v.frame.t), out[2] = dot(s->wi, v.frame.n);
+  };
+  testing::Chi2Options options;
+  options.samples = 200000;
+  options.seed = GetParam().seed;
+  options.subdivisions = 8;
+  testing::expect_chi2(testing::chi2_test(sample, pdf, testing::Domain::directions(v.z_min, 1, 12, 24), options),
+                       GetParam().name);
+}
+
+INSTANTIATE_TEST_SUITE_P(Strategies, RenderExactDiskChi2,
+                         ::testing::Values(DiskStrategy{"area", LightStrategy::area, 23},
+                                           DiskStrategy{"solid-angle", LightStrategy::solid_angle, 24},
+                                           DiskStrategy{"projected-solid-angle", LightStrategy::projected_solid_angle, 25}),
+                         [](const auto& info) { return testing::chi2_param_name(info.param.name); });
+
+// Each sample carries the area density, and light_pdf of the hit it leads to agrees (MIS).
+TEST(RenderExactDisk, LightSamplesCarryTheirDensityAndLightPdfAgrees) {
+  const MovingDiskView v;
+  const auto& [normal, scene, x, n, center, axis, z_min, frame] = v;
   const Accelerator accelerator(scene);
   for (int i = 0; i < 500; ++i) {
     const auto s = sample_light(scene, scene.lights[0], x, n, 0.5, {uniform01(5, i, 0), uniform01(5, i, 1)},
@@ -303,7 +328,7 @@ TEST(RenderExactDisk, DirectIntegratorMatchesTheClosedFormIrradiance) {
                {"type": "disk", "center": [0, 2, 0], "normal": [0, -1, 0], "radius": 1.5, "material": "lamp"}]})",
                                   "direct-oracle");
   const char* strategies[] = {"area", "solid-angle", "projected-solid-angle", "bsdf", "mis"};
-  const double alpha = testing::sidak_alpha(0.01, 5);
+  const double alpha = testing::sidak_alpha(0.01, static_cast<int>(std::size(strategies)));
   const double z = boost::math::quantile(boost::math::complement(boost::math::normal(), alpha / 2));
   RenderSettings s;
   s.integrator = "direct";

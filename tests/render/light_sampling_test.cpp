@@ -23,9 +23,9 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// The χ² tests of this file: 3, each at the Šidák level for family α = 0.01.
-constexpr int chi2_tests_here = 3;
-double chi2_level() { return testing::sidak_alpha(0.01, chi2_tests_here); }
+// The three tests of RenderLightSamplingChi2 are members of the χ² family
+// (tests/warps/chi2.hpp: Šidák at family α = 0.01), one χ² check each.
+class RenderLightSamplingChi2 : public testing::Chi2Fixture<> {};
 
 /// The solid angle of the triangle (a, b, c) seen from x, by Van Oosterom and
 /// Strackee (1983): tan(Ω/2) = |a·(b×c)| / (1 + a·b + b·c + c·a) for unit
@@ -74,7 +74,7 @@ Scene one_light(const std::string& shape) {
                          "shapes": [)" + shape + R"(]})", "light");
 }
 
-TEST(RenderLightSampling, SphereConeDirectionsAreUniformOverTheCone) {
+TEST_F(RenderLightSamplingChi2, SphereConeDirectionsAreUniformOverTheCone) {
   // A moving sphere seen at time 0.5: centre (0.5, 3, 1) + 0.5·(2, 0, 0).
   const Scene scene = one_light(R"({"type": "sphere", "center": [0.5, 3, 1], "radius": 0.8, "motion": [2, 0, 0],
                                     "material": "lamp"})");
@@ -84,7 +84,7 @@ TEST(RenderLightSampling, SphereConeDirectionsAreUniformOverTheCone) {
   const auto result = light_chi2(
       scene, scene.lights[0], x, n, 0.5, center - x, cos_max,
       [&](Vec3 w) { return dot(w, normalize(center - x)) >= cos_max ? uniform : 0.0; }, 8);
-  EXPECT_GT(result.p_value, chi2_level()) << result.table;
+  testing::expect_chi2(result);
   // Every sample's distance puts its point on the sphere, where it has that density.
   for (int i = 0; i < 1000; ++i) {
     const auto s = sample_light(scene, scene.lights[0], x, n, 0.5, {uniform01(3, i, 0), uniform01(3, i, 1)},
@@ -96,7 +96,7 @@ TEST(RenderLightSampling, SphereConeDirectionsAreUniformOverTheCone) {
   }
 }
 
-TEST(RenderLightSampling, TriangleMeshDirectionsFollowAreaPickThenUniformSolidAngle) {
+TEST_F(RenderLightSamplingChi2, TriangleMeshDirectionsFollowAreaPickThenUniformSolidAngle) {
   // Two triangles of areas 0.5 and 2 (picked with probability 0.2 and 0.8),
   // both facing down towards x: density Σ_k (A_k / A)·[w crosses k] / Ω_k.
   const Scene scene = one_light(R"({"type": "triangles", "material": "lamp",
@@ -112,10 +112,10 @@ TEST(RenderLightSampling, TriangleMeshDirectionsFollowAreaPickThenUniformSolidAn
   double z_min = 1;
   for (Vec3 p : v) z_min = std::min(z_min, dot(normalize(p - x), normalize(axis)));
   const auto result = light_chi2(scene, scene.lights[0], x, n, 0, axis, z_min - 0.01, density, 32);
-  EXPECT_GT(result.p_value, chi2_level()) << result.table;
+  testing::expect_chi2(result);
 }
 
-TEST(RenderLightSampling, RectangleDirectionsAreUniformOverItsSolidAngle) {
+TEST_F(RenderLightSamplingChi2, RectangleDirectionsAreUniformOverItsSolidAngle) {
   const Scene scene = one_light(R"({"type": "quad", "corner": [-0.5, 2, -1], "edge_u": [2, 0, 0], "edge_v": [0, 0, 1.5],
                                     "material": "lamp"})");
   const Vec3 x{0.1, 0, 0.2}, n{0, 1, 0};
@@ -126,7 +126,7 @@ TEST(RenderLightSampling, RectangleDirectionsAreUniformOverItsSolidAngle) {
   double z_min = 1;
   for (Vec3 p : {a, b, c, e}) z_min = std::min(z_min, dot(normalize(p - x), normalize(axis)));
   const auto result = light_chi2(scene, scene.lights[0], x, n, 0, axis, z_min - 0.01, density, 32);
-  EXPECT_GT(result.p_value, chi2_level()) << result.table;
+  testing::expect_chi2(result);
 }
 
 std::pair<double, double> irradiance(const Scene& scene, Vec3 x, Vec3 n, LightStrategy strategy, int samples) {

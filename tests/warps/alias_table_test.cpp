@@ -47,24 +47,27 @@ double as_point(const AliasTable<double>& table, double u) {
 }
 
 // χ² of the index frequencies (one bin per index) and, on 4 bins per index,
-// of the leftover's uniformity given the index; level testing::chi2_alpha().
-TEST(WarpAliasTable, Chi2IndexFrequenciesAndLeftover) {
-  const AliasTable<double> table(weights);
-  const double n = static_cast<double>(weights.size());
-  const testing::PdfFn pdf = [&](const double* p) {
-    return table.pmf(std::min(weights.size() - 1, static_cast<std::size_t>(p[0] * n))) * n;
-  };
-  testing::Chi2Options options;
-  options.input_dim = 1;
-  options.subdivisions = 1;  // the density is constant on each bin
-  const auto sample = [&](const double* u, double* out) { out[0] = as_point(table, u[0]); };
-  const auto index_only = testing::chi2_test(sample, pdf, testing::Domain::interval(0, 1, weights.size()), options);
-  EXPECT_GT(index_only.p_value, testing::chi2_alpha()) << index_only.table;
-  options.seed = 2;
-  const auto with_leftover =
-      testing::chi2_test(sample, pdf, testing::Domain::interval(0, 1, 4 * weights.size()), options);
-  EXPECT_GT(with_leftover.p_value, testing::chi2_alpha()) << with_leftover.table;
-}
+// of the leftover's uniformity given the index; two members of the χ² family
+// (tests/warps/chi2.hpp: Šidák at family α = 0.01).
+class WarpAliasTableChi2 : public testing::Chi2Fixture<> {
+ protected:
+  testing::Chi2Result chi2(long bins_per_index, std::uint64_t seed) const {
+    const double n = static_cast<double>(weights.size());
+    const testing::PdfFn pdf = [&](const double* p) {
+      return table.pmf(std::min(weights.size() - 1, static_cast<std::size_t>(p[0] * n))) * n;
+    };
+    testing::Chi2Options options;
+    options.input_dim = 1;
+    options.subdivisions = 1;  // the density is constant on each bin
+    options.seed = seed;
+    const auto sample = [&](const double* u, double* out) { out[0] = as_point(table, u[0]); };
+    return testing::chi2_test(sample, pdf, testing::Domain::interval(0, 1, bins_per_index * weights.size()), options);
+  }
+  const AliasTable<double> table{weights};
+};
+
+TEST_F(WarpAliasTableChi2, IndexFrequencies) { testing::expect_chi2(chi2(1, 1)); }
+TEST_F(WarpAliasTableChi2, LeftoverUniformGivenIndex) { testing::expect_chi2(chi2(4, 2)); }
 
 TEST(WarpAliasTable, InverseRoundTripBothWays) {
   const AliasTable<double> table(weights);

@@ -1,6 +1,7 @@
 #pragma once
 // χ² goodness-of-fit of a warp against its density, shared by the warp tests
-// (tests/warps and tests/registry), after Mitsuba 3's `chi2` test and Nori's warptest.
+// (tests/warps) and the renderer's sampling tests (tests/render), after
+// Mitsuba 3's `chi2` test and Nori's warptest.
 //
 // API
 //   using SampleFn = std::function<void(const double* u, double* out)>;  // u: input_dim numbers in [0,1)
@@ -11,9 +12,15 @@
 //   Domain::directions(z_min, z_max, n_z, n_phi) unit vectors (out[0..2]); pdf per steradian;
 //                                                equal-solid-angle bins in (z = cos θ, φ)
 //   Chi2Result chi2_test(sample, pdf, domain, Chi2Options{samples, seed, input_dim, subdivisions})
-//       -> {statistic, dof, p_value, table}; EXPECT_GT(result.p_value, alpha) << result.table;
+//       -> {statistic, dof, p_value, table}
+//   expect_chi2(result, what)                     the family's check: p > chi2_alpha(), once per gtest,
+//                                                 only in a test suite whose name ends in "Chi2"
+//   Chi2Fixture<Base>                             fixture for such suites: fails a test that never called
+//                                                 expect_chi2 (TEST_F, or TEST_P with Base = TestWithParam<P>)
+//   chi2_param_name(name)                         a case's name as a gtest parameter name ("cone -0.3" -> cone_m0_3)
 //   double sidak_alpha(family_alpha, tests)       per-test level for `tests` χ² tests at family level
-//   chi2_alpha()                                  sidak_alpha(0.01, chi2_tests_in_suite = 40): use this
+//   int chi2_tests_in_suite()                     T: registered tests in suites named *Chi2 (computed)
+//   chi2_alpha()                                  sidak_alpha(0.01, T)
 //   std::vector<int> stratum_hits(sample, n0, n1, seed, cell_of, cells)
 //       maps one jittered point per cell of an n0 × n1 grid of the unit square and counts the images
 //       per image cell (cell_of: point -> index in [0, cells), -1 for none).
@@ -35,15 +42,18 @@
 // 2·10⁵ samples (measured with Simpson's rule, the concentric disk and a 16 × 16 box grid).
 // dof = (cells after pooling) − 1; p = 1 − F_χ²(statistic; dof) with Boost.Math.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <boost/math/distributions/chi_squared.hpp>
+#include <gtest/gtest.h>
 
 #include "stratum/util/hash.hpp"
 
@@ -130,20 +140,107 @@ struct Chi2Result {
   std::string table;  ///< the cells contributing most to the statistic, for failure messages
 };
 
-/// T, the number of χ² tests in the warp suite (tests/warps/*_test.cpp and
-/// tests/registry/warp_*_test.cpp), counted generously: each test
-/// passes when p > sidak_alpha(0.01, chi2_tests_in_suite) ≈ 2.5e-4, so the
-/// whole suite has a false-alarm rate of at most 1% while it holds at most T
-/// χ² tests (a larger T than the true count only makes this conservative).
-inline constexpr int chi2_tests_in_suite = 40;
-
 /// Šidák-corrected per-test level: 1 − (1 − family_alpha)^(1/tests).
 inline double sidak_alpha(double family_alpha, int tests) {
   return 1.0 - std::pow(1.0 - family_alpha, 1.0 / tests);
 }
 
-/// The level every warp χ² test uses: Šidák at family α = 0.01 over T = 40 tests.
-inline double chi2_alpha() { return sidak_alpha(0.01, chi2_tests_in_suite); }
+/// The χ² family. Every gtest in a test suite whose name ends in "Chi2" is one
+/// χ² test of a correct sampler (TEST_P instantiations count each parameter:
+/// their suite is "Prefix/NameChi2"). T is counted from gtest's registry, which
+/// holds every test of the binary whatever --gtest_filter selects, so a ctest
+/// process running one test computes the same T as a full run. expect_chi2
+/// refuses to run outside such a suite or twice in one gtest, so the family
+/// can never hold more χ² tests than T. Tests that check a wrong sampler is
+/// rejected (p < 1e-12) are not members: their suites do not end in "Chi2".
+inline bool is_chi2_suite(std::string_view suite_name) { return suite_name.ends_with("Chi2"); }
+
+/// T: the number of registered tests in suites whose name ends in "Chi2".
+inline int chi2_tests_in_suite() {
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  int tests = 0;
+  for (int i = 0; i < unit.total_test_suite_count(); ++i) {
+    const ::testing::TestSuite& suite = *unit.GetTestSuite(i);
+    if (is_chi2_suite(suite.name())) tests += suite.total_test_count();
+  }
+  return tests;
+}
+
+/// The level every χ² test of the family uses: Šidák at family α = 0.01 over
+/// the computed T, so the whole binary raises a false alarm with probability
+/// at most 1%; per test about 0.01/T (T = 41 today with the renderer, 2.45e-4;
+/// 31 without it; printed by WarpChi2Family.CountIsComputedFromTheRegisteredTests).
+inline double chi2_alpha() { return sidak_alpha(0.01, chi2_tests_in_suite()); }
+
+/// The property a family member records its p-value under (visible in
+/// --gtest_output=xml); its presence marks that the test has had its χ² check.
+inline constexpr const char* chi2_property = "chi2_p_value";
+
+inline bool chi2_recorded(const ::testing::TestInfo& test) {
+  const ::testing::TestResult& result = *test.result();
+  for (int i = 0; i < result.test_property_count(); ++i)
+    if (std::string_view(result.GetTestProperty(i).key()) == chi2_property) return true;
+  return false;
+}
+
+/// The family's one check: p > chi2_alpha(). Fails the test instead when it
+/// runs outside a *Chi2 suite or a second time in the same gtest, either of
+/// which would make the family hold more χ² tests than T counts.
+inline void expect_chi2(const Chi2Result& result, const std::string& what = {}) {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  if (test == nullptr) {
+    ADD_FAILURE() << "expect_chi2 outside a running test";
+    return;
+  }
+  const std::string name = std::string(test->test_suite_name()) + "." + test->name();
+  if (!is_chi2_suite(test->test_suite_name())) {
+    ADD_FAILURE() << "expect_chi2 in " << name << ": a χ² test of the family must live in a test suite whose "
+                  << "name ends in \"Chi2\", or the Šidák count T (tests/warps/chi2.hpp) misses it";
+    return;
+  }
+  if (chi2_recorded(*test)) {
+    ADD_FAILURE() << "expect_chi2 called twice in " << name << " (" << what << "): one χ² test per gtest, "
+                  << "or the Šidák count T (tests/warps/chi2.hpp) is too small; make each case its own TEST_P";
+    return;
+  }
+  ::testing::Test::RecordProperty(chi2_property, std::to_string(result.p_value));
+  const int tests = chi2_tests_in_suite();
+  EXPECT_GT(result.p_value, chi2_alpha()) << what << (what.empty() ? "" : "\n") << "level: Šidák, family α = 0.01 over T = "
+                                          << tests << " χ² tests\n" << result.table;
+}
+
+/// Fixture of a *Chi2 suite: a test that ends without its χ² check fails.
+template <class Base = ::testing::Test>
+class Chi2Fixture : public Base {
+ protected:
+  void TearDown() override {
+    const ::testing::TestInfo& test = *::testing::UnitTest::GetInstance()->current_test_info();
+    if (!this->HasFatalFailure() && !this->IsSkipped() && !chi2_recorded(test))
+      ADD_FAILURE() << test.test_suite_name() << "." << test.name() << " is in a *Chi2 suite but made no χ² check "
+                    << "(expect_chi2): it is counted in T for nothing, or its check was lost";
+  }
+};
+
+/// A case's display name as a gtest parameter name: letters and digits kept,
+/// a minus sign before a number as "m", anything else one "_".
+inline std::string chi2_param_name(std::string_view name) {
+  std::string out;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(name[i]);
+    const bool starts_number = c == '-' && i + 1 < name.size() && std::isdigit(static_cast<unsigned char>(name[i + 1])) &&
+                               (i == 0 || !std::isalnum(static_cast<unsigned char>(name[i - 1])));
+    if (std::isalnum(c) && c < 128) {
+      out += static_cast<char>(c);
+    } else if (starts_number) {
+      if (!out.empty() && out.back() != '_') out += '_';
+      out += 'm';
+    } else if (!out.empty() && out.back() != '_') {
+      out += '_';
+    }
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
 
 /// Integral of pdf × measure over bin (i, j): 3-point Gauss–Legendre on each
 /// of `subdivisions` × `subdivisions` sub-panels. An open rule: it never

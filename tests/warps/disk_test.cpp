@@ -22,18 +22,32 @@ testing::SampleFn sampler(A2 (*map)(A2)) {
 const testing::PdfFn disk_pdf = [](const double* p) { return uniform_disk_pdf<double>({p[0], p[1]}); };
 
 // χ² against the uniform density, binned on the disk in equal-area (r², φ)
-// cells and, independently, on the bounding box grid (level: testing::chi2_alpha()).
-TEST(WarpDisk, Chi2PolarAndConcentric) {
-  for (auto map : {sample_polar_disk<double>, sample_concentric_disk<double>}) {
-    const auto polar_bins = testing::chi2_test(sampler(map), disk_pdf, testing::Domain::disk(1, 10, 20));
-    EXPECT_GT(polar_bins.p_value, testing::chi2_alpha()) << polar_bins.table;
-    testing::Chi2Options options;
-    options.subdivisions = 32;  // the disk's rim cuts the box cells: a finer quadrature subgrid
-    const auto box_bins =
-        testing::chi2_test(sampler(map), disk_pdf, testing::Domain::box(-1, 1, -1, 1, 16, 16), options);
-    EXPECT_GT(box_bins.p_value, testing::chi2_alpha()) << box_bins.table;
-  }
+// cells and, independently, on the bounding box grid: one test of the χ²
+// family (tests/warps/chi2.hpp: Šidák at family α = 0.01) per map and binning.
+struct DiskCase {
+  const char* name;
+  A2 (*map)(A2);
+  bool box_bins;  // false: equal-area polar cells
+};
+
+void PrintTo(const DiskCase& c, std::ostream* out) { *out << c.name; }  // ctest's names show the case
+
+class WarpDiskChi2 : public testing::Chi2Fixture<::testing::TestWithParam<DiskCase>> {};
+
+TEST_P(WarpDiskChi2, UniformOnTheDisk) {
+  const DiskCase& c = GetParam();
+  testing::Chi2Options options;
+  if (c.box_bins) options.subdivisions = 32;  // the disk's rim cuts the box cells: a finer quadrature subgrid
+  const auto domain = c.box_bins ? testing::Domain::box(-1, 1, -1, 1, 16, 16) : testing::Domain::disk(1, 10, 20);
+  testing::expect_chi2(testing::chi2_test(sampler(c.map), disk_pdf, domain, options), c.name);
 }
+
+INSTANTIATE_TEST_SUITE_P(Maps, WarpDiskChi2,
+                         ::testing::Values(DiskCase{"polar, polar bins", sample_polar_disk<double>, false},
+                                           DiskCase{"polar, box bins", sample_polar_disk<double>, true},
+                                           DiskCase{"concentric, polar bins", sample_concentric_disk<double>, false},
+                                           DiskCase{"concentric, box bins", sample_concentric_disk<double>, true}),
+                         [](const auto& info) { return testing::chi2_param_name(info.param.name); });
 
 // The χ² test can fail: a disk sampled with r = u1 (not √u1) is rejected.
 TEST(WarpDisk, Chi2RejectsWrongRadius) {

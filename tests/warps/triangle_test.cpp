@@ -19,9 +19,11 @@ const UniformTriangle<double, 2> planar({0.2, -0.5}, {1.5, 0.3}, {-0.4, 1.1});
 // A triangle in space, tilted out of every coordinate plane.
 const UniformTriangle<double, 3> spatial({1, 0, 0.5}, {0, 2, -1}, {-1, -0.5, 2});
 
-// χ² on the bounding box grid (level testing::chi2_alpha()); the edges cut
-// cells, hence the fine quadrature subgrid.
-TEST(WarpTriangle, Chi2Planar) {
+// Two members of the χ² family (tests/warps/chi2.hpp: Šidák at family α = 0.01).
+class WarpTriangleChi2 : public testing::Chi2Fixture<> {};
+
+// χ² on the bounding box grid; the edges cut cells, hence the fine quadrature subgrid.
+TEST_F(WarpTriangleChi2, Planar) {
   const testing::SampleFn sample = [](const double* u, double* out) {
     const A2 p = planar.sample({u[0], u[1]});
     out[0] = p[0], out[1] = p[1];
@@ -29,15 +31,14 @@ TEST(WarpTriangle, Chi2Planar) {
   const testing::PdfFn pdf = [](const double* p) { return planar.pdf({p[0], p[1]}); };
   testing::Chi2Options options;
   options.subdivisions = 32;
-  const auto result = testing::chi2_test(sample, pdf, testing::Domain::box(-0.4, 1.5, -0.5, 1.1, 16, 16), options);
-  EXPECT_GT(result.p_value, testing::chi2_alpha()) << result.table;
+  testing::expect_chi2(testing::chi2_test(sample, pdf, testing::Domain::box(-0.4, 1.5, -0.5, 1.1, 16, 16), options));
 }
 
 // The spatial triangle: χ² on its points' first two barycentric coordinates,
 // which are uniform on the reference triangle {b0, b1 >= 0, b0 + b1 <= 1} with
 // density 2 (an affine image keeps uniformity; the barycentrics come from an
 // independent least-squares solve here).
-TEST(WarpTriangle, Chi2Spatial) {
+TEST_F(WarpTriangleChi2, Spatial) {
   const A3 v0 = {1, 0, 0.5}, v1 = {0, 2, -1}, v2 = {-1, -0.5, 2};
   const testing::SampleFn sample = [&](const double* u, double* out) {
     const A3 p = spatial.sample({u[0], u[1]});
@@ -51,8 +52,7 @@ TEST(WarpTriangle, Chi2Spatial) {
   };
   testing::Chi2Options options;
   options.subdivisions = 32;
-  const auto result = testing::chi2_test(sample, pdf, testing::Domain::box(0, 1, 0, 1, 14, 14), options);
-  EXPECT_GT(result.p_value, testing::chi2_alpha()) << result.table;
+  testing::expect_chi2(testing::chi2_test(sample, pdf, testing::Domain::box(0, 1, 0, 1, 14, 14), options));
 }
 
 TEST(WarpTriangle, ClosedForms) {
