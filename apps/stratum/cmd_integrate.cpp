@@ -12,6 +12,7 @@
 #include "schema_json.hpp"
 #include "sampler_options.hpp"
 #include "stratum/analysis/convergence.hpp"
+#include "stratum/analysis/integrate_tolerance.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::cli {
@@ -25,6 +26,8 @@ struct IntegrateOptions {
   std::optional<std::int64_t> n, d;
   std::int64_t runs = 1, threads = 1;
   double confidence = 0.95;
+  std::optional<double> abs_tol, rel_tol;
+  std::optional<std::int64_t> max_n;
   std::vector<std::string> integrand_params;
   bool json = false, list = false;
 };
@@ -65,9 +68,26 @@ void run_integrate(const IntegrateOptions& o) {
   request.seed = o.sampler.seed;
   request.threads = static_cast<unsigned>(o.threads);
   request.confidence = o.confidence;
-  const sa::IntegrationResult r = sa::integrate(request);
+  const bool to_tolerance = o.abs_tol || o.rel_tol;
+  if (o.max_n && !to_tolerance)
+    throw invalid_argument("max-n", std::to_string(*o.max_n), "applies with --abs-tol or --rel-tol");
+  require(!o.max_n || *o.max_n >= 1, "max-n", o.max_n.value_or(0), "must be a positive integer");
+  sa::ToleranceResult tolerance;
+  if (to_tolerance) {
+    sa::ToleranceRequest tolerance_request{request, o.abs_tol.value_or(0), o.rel_tol.value_or(0)};
+    if (o.max_n) tolerance_request.max_n = static_cast<std::uint64_t>(*o.max_n);
+    tolerance = sa::integrate_to_tolerance(tolerance_request);
+  }
+  const sa::IntegrationResult r = to_tolerance ? tolerance.result : sa::integrate(request);
+  nlohmann::json steps = nlohmann::json::array();
+  std::string step_counts;
+  for (const auto& step : tolerance.steps) {
+    steps.push_back({{"n", step.n}, {"estimate", step.estimate}, {"half_width", step.half_width},
+                     {"target", step.target}, {"seconds", step.seconds}});
+    step_counts += (step_counts.empty() ? "" : ", ") + std::to_string(step.n);
+  }
   if (o.json) {
-    const nlohmann::json out = {{"integrand", r.integrand}, {"sampler", r.sampler}, {"randomize", r.randomize},
+    nlohmann::json out = {{"integrand", r.integrand}, {"sampler", r.sampler}, {"randomize", r.randomize},
                                 {"d", r.d}, {"n", r.n}, {"runs", r.runs}, {"seed", o.sampler.seed},
                                 {"estimate", r.estimate},
                                 {"standard_error", std::isfinite(r.standard_error) ? nlohmann::json(r.standard_error)
@@ -77,6 +97,9 @@ void run_integrate(const IntegrateOptions& o) {
                                 {"confidence", r.confidence}, {"interval", {finite(r.interval_low), finite(r.interval_high)}},
                                 {"half_width", finite(r.half_width)}, {"seconds_per_run", r.seconds_per_run},
                                 {"efficiency", finite(r.efficiency)}};
+    if (to_tolerance)
+      out["tolerance"] = {{"abs_tol", o.abs_tol.value_or(0)}, {"rel_tol", o.rel_tol.value_or(0)},
+                          {"target", tolerance.target}, {"met", tolerance.met}, {"steps", steps}};
     fmt::print("{}\n", out.dump(2));
     return;
   }
@@ -97,6 +120,10 @@ void run_integrate(const IntegrateOptions& o) {
                100 * r.confidence, r.interval_low, r.interval_high, r.half_width,
                r.runs >= 2 ? fmt::format("{} runs", r.runs) : std::string("the n values: iid"), r.efficiency,
                r.seconds_per_run);
+  if (to_tolerance)
+    fmt::print("tolerance       {}: half-width {:.4g} {} target {:.4g} at n = {} ({} steps: n = {})\n",
+               tolerance.met ? "met" : "NOT met (max-n reached)", r.half_width, tolerance.met ? "<=" : ">",
+               tolerance.target, r.n, tolerance.steps.size(), step_counts);
 }
 }  // namespace
 
@@ -114,6 +141,11 @@ void add_integrate_command(CLI::App& app) {
   command->add_option("--confidence", o->confidence,
                       "level of the confidence interval, in (0, 1) (Student-t over the runs' replicates)")
       ->capture_default_str();
+  command->add_option("--abs-tol", o->abs_tol,
+                      "integrate to a tolerance: double n until the interval's half-width <= max(abs-tol, rel-tol x "
+                      "|estimate|) (docs/samplers.md)");
+  command->add_option("--rel-tol", o->rel_tol, "relative tolerance, in [0, 1) (with or instead of --abs-tol)");
+  command->add_option("--max-n", o->max_n, "with a tolerance: the most points per run (default 2^24)");
   command->add_option("--integrand-param", o->integrand_params, "integrand parameter KEY=V1,V2,... (repeatable)");
   command->add_flag("--json", o->json, "print JSON");
   command->add_flag("--list", o->list, "list the integrands and exit");

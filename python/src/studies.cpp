@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "interruptible.hpp"
 #include "stratum/analysis/convergence.hpp"
+#include "stratum/analysis/integrate_tolerance.hpp"
 #include "stratum/analysis/dimension_study.hpp"
 #include "stratum/analysis/importance_study.hpp"
 #include "stratum/analysis/integrands.hpp"
@@ -46,7 +47,8 @@ py::list integrand_list() {
 
 py::dict integrate(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
                    const std::string& sampler, const std::string& randomize, std::uint64_t n, unsigned runs,
-                   std::uint64_t seed, unsigned threads, double confidence) {
+                   std::uint64_t seed, unsigned threads, double confidence, std::optional<double> abs_tol,
+                   std::optional<double> rel_tol, std::optional<std::uint64_t> max_n) {
   sa::IntegrationRequest request;
   request.integrand = {integrand, d, params};
   const SamplerSpec spec = combine_sampler_options(sampler, {}, randomize);
@@ -56,12 +58,23 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
   request.seed = seed;
   request.threads = threads;
   request.confidence = confidence;
+  const bool to_tolerance = abs_tol || rel_tol;
+  if (max_n && !to_tolerance)
+    throw invalid_argument("max_n", std::to_string(*max_n), "applies with abs_tol or rel_tol");
   sa::IntegrationResult r;
+  sa::ToleranceResult tolerance;
   {
     InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
-    r = sa::integrate(request);
+    if (to_tolerance) {
+      sa::ToleranceRequest tolerance_request{request, abs_tol.value_or(0), rel_tol.value_or(0)};
+      if (max_n) tolerance_request.max_n = *max_n;
+      tolerance = sa::integrate_to_tolerance(tolerance_request);
+      r = tolerance.result;
+    } else {
+      r = sa::integrate(request);
+    }
   }
-  return py::dict(py::arg("integrand") = r.integrand, py::arg("sampler") = r.sampler,
+  py::dict out(py::arg("integrand") = r.integrand, py::arg("sampler") = r.sampler,
                   py::arg("randomize") = r.randomize, py::arg("d") = r.d, py::arg("n") = r.n, py::arg("runs") = r.runs,
                   py::arg("estimate") = r.estimate, py::arg("standard_error") = r.standard_error,
                   py::arg("standard_error_kind") = r.standard_error_kind, py::arg("exact") = r.exact,
@@ -70,6 +83,17 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
                   py::arg("interval") = py::make_tuple(r.interval_low, r.interval_high),
                   py::arg("half_width") = r.half_width, py::arg("seconds_per_run") = r.seconds_per_run,
                   py::arg("efficiency") = r.efficiency);
+  if (to_tolerance) {
+    py::list steps;
+    for (const auto& step : tolerance.steps)
+      steps.append(py::dict(py::arg("n") = step.n, py::arg("estimate") = step.estimate,
+                            py::arg("half_width") = step.half_width, py::arg("target") = step.target,
+                            py::arg("seconds") = step.seconds));
+    out["tolerance"] = py::dict(py::arg("abs_tol") = abs_tol.value_or(0), py::arg("rel_tol") = rel_tol.value_or(0),
+                                py::arg("target") = tolerance.target, py::arg("met") = tolerance.met,
+                                py::arg("steps") = steps);
+  }
+  return out;
 }
 
 py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandParams& params,
@@ -125,7 +149,7 @@ void bind_integrate_converge(py::module_& m) {
   m.def("integrands", &integrand_list, "Every test integrand as a dict");
   m.def("integrate", &integrate, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("sampler"),
         py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"),
-        py::arg("confidence"));
+        py::arg("confidence"), py::arg("abs_tol"), py::arg("rel_tol"), py::arg("max_n"));
   m.def("converge", &converge, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("samplers"),
         py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"),
         py::arg("confidence"));

@@ -70,6 +70,7 @@ def integrands() -> list[dict]:
 
 def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | None = None, seed: int = 0,
               randomize: str | None = None, runs: int = 1, threads: int = 1, confidence: float = 0.95,
+              abs_tol: float | None = None, rel_tol: float | None = None, max_n: int | None = None,
               **params) -> dict:
     """Estimate `integrand` over [0,1]^d with `n` points of `sampler`, a
     spec NAME[(KEY=VALUE,...)][:RANDOMIZER] ("sobol:owen",
@@ -90,6 +91,14 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     runs=1, t_{n-1} over the n values), its half_width, and efficiency
     1 / (variance x seconds) with seconds_per_run, as converge has (nan
     without a standard error).
+
+    abs_tol / rel_tol: integrate to a tolerance, doubling n (from `n`, at
+    most `max_n`, default 2**24) until half_width <= max(abs_tol, rel_tol *
+    |estimate|), as QMCPy's replicated stopping rules do; the result then
+    has "tolerance": abs_tol, rel_tol, target, met and the steps (n,
+    estimate, half_width, target, seconds). Stopping when the interval is
+    first narrow can cover less than `confidence` (optional stopping);
+    use 16 or more runs (docs/samplers.md).
     """
     if isinstance(confidence, bool) or not isinstance(confidence, numbers.Real) or not 0 < confidence < 1:
         raise InvalidArgument(f"invalid confidence = {confidence!r}: must be a level strictly between 0 and 1, "
@@ -97,8 +106,14 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     n = _count("n", n, "must be a positive integer")
     runs = _small("runs", runs, "must be in [1, 1000000]", 1, 1000000)
     threads = _checks.threads(threads)
+    tolerances = []
+    for name, value in (("abs_tol", abs_tol), ("rel_tol", rel_tol)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Real)):
+            raise InvalidArgument(f"invalid {name} = {value!r}: must be a real number")
+        tolerances.append(None if value is None else float(value))
+    max_n = None if max_n is None else _count("max_n", max_n, "must be a positive integer")
     return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize or "", n, runs,
-                              _seed(seed), threads, float(confidence))
+                              _seed(seed), threads, float(confidence), tolerances[0], tolerances[1], max_n)
 
 
 def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = None, seed: int = 0,

@@ -177,3 +177,29 @@ def test_converge_slope_interval():
     for level in (0, 1, True, "0.9"):
         with pytest.raises(stratum.InvalidArgument, match="confidence"):
             stratum.converge("gaussian", "random", [16, 64], runs=4, confidence=level)
+
+
+def test_integrate_to_a_tolerance():
+    r = stratum.integrate("genz-gaussian", "sobol:owen", n=16, d=3, runs=8, seed=5, abs_tol=1e-4)
+    t = r["tolerance"]
+    assert t["met"] and t["target"] == 1e-4 and t["rel_tol"] == 0
+    ns = [s["n"] for s in t["steps"]]
+    assert ns == [16 << k for k in range(len(ns))] and r["n"] == ns[-1]
+    assert all(s["half_width"] > 1e-4 for s in t["steps"][:-1]) and r["half_width"] <= 1e-4
+    # The last step is the plain call at that n, bit for bit.
+    plain = stratum.integrate("genz-gaussian", "sobol:owen", n=ns[-1], d=3, runs=8, seed=5)
+    assert plain["estimate"] == r["estimate"] and "tolerance" not in plain
+    unmet = stratum.integrate("gaussian", "random", n=16, runs=4, rel_tol=1e-6, max_n=64)["tolerance"]
+    assert not unmet["met"] and [s["n"] for s in unmet["steps"]] == [16, 32, 64]
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"abs_tol": 0}, "give --abs-tol or --rel-tol greater than 0"),
+    ({"abs_tol": "1e-3"}, "invalid abs_tol = '1e-3': must be a real number"),
+    ({"rel_tol": 1.5}, r"invalid rel-tol = 1.5: must be a real in \[0, 1\)"),
+    ({"max_n": 64}, "invalid max_n = 64: applies with abs_tol or rel_tol"),
+    ({"abs_tol": 1e-3, "max_n": 8}, "invalid max-n = 8: must be at least n = 16"),
+])
+def test_integrate_tolerance_refusals(kwargs, match):
+    with pytest.raises(stratum.InvalidArgument, match=match):
+        stratum.integrate("gaussian", "random", n=16, runs=4, **kwargs)

@@ -113,4 +113,22 @@ if [ "$(id -u)" != 0 ]; then
 fi
 [ -z "$(ls -A "$tmp" | grep -v -e '^out$' -e '^err$' -e '\.json$' -e '^c\.png$' -e '^ro$')" ] && ok || fail "stray files: $(ls -A "$tmp")"
 
+# To a tolerance: the steps double n and stop at the first half-width within the target; JSON = text.
+"$stratum" integrate --integrand genz-gaussian -d 3 -s sobol:owen -n 16 --runs 8 --abs-tol 1e-4 --json >"$tmp/tol.json" && ok || fail "integrate --abs-tol"
+/usr/bin/python3 - "$tmp/tol.json" <<'PY' && ok || fail "tolerance JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+t = d["tolerance"]
+assert t["met"] and t["abs_tol"] == 1e-4 and t["target"] == 1e-4
+steps = t["steps"]
+assert [s["n"] for s in steps] == [16 << k for k in range(len(steps))]
+assert all(s["half_width"] > 1e-4 for s in steps[:-1]) and steps[-1]["half_width"] <= 1e-4
+assert d["n"] == steps[-1]["n"] and d["half_width"] == steps[-1]["half_width"]
+PY
+"$stratum" integrate --integrand gaussian -s random -n 16 --runs 4 --abs-tol 1e-9 --max-n 64 | grep -q "NOT met (max-n reached).*n = 16, 32, 64" && ok || fail "tolerance not met at max-n"
+expect_error "invalid abs-tol = 0: give --abs-tol or --rel-tol" integrate --integrand gaussian -n 16 --runs 4 --abs-tol 0
+expect_error "invalid rel-tol = 1" integrate --integrand gaussian -n 16 --runs 4 --rel-tol 1
+expect_error "invalid max-n = 64: applies with --abs-tol" integrate --integrand gaussian -n 16 --runs 4 --max-n 64
+expect_error "which grid refuses" integrate --integrand gaussian -s grid:cp -n 16 --runs 4 --abs-tol 1e-3
+expect_error "gives no error estimate" integrate --integrand gaussian -s sobol:none -n 16 --runs 4 --abs-tol 1e-3
 finish
