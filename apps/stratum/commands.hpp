@@ -21,4 +21,5 @@ void add_report_command(CLI::App& app);       // cmd_report.cpp (only with the r
 void add_study_mitchell_command(CLI::App& study);    // cmd_study_mitchell.cpp
 void add_study_dimension_command(CLI::App& study);   // cmd_study_dimension.cpp
 void add_study_importance_command(CLI::App& study);  // cmd_study_importance.cpp
+void add_study_mis_command(CLI::App& study);         // cmd_study_mis.cpp
 }  // namespace stratum::cli

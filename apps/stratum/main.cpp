@@ -38,11 +38,12 @@ int main(int argc, char** argv) {
 #ifdef STRATUM_HAS_REPORT
   stratum::cli::add_report_command(app);
 #endif
-  auto* study = app.add_subcommand("study", "Reproduce a study of the lecture: mitchell, dimension or importance");
+  auto* study = app.add_subcommand("study", "Reproduce a study of the lecture: mitchell, dimension, importance or mis");
   study->require_subcommand(1);
   stratum::cli::add_study_mitchell_command(*study);
   stratum::cli::add_study_dimension_command(*study);
   stratum::cli::add_study_importance_command(*study);
+  stratum::cli::add_study_mis_command(*study);
   stratum::io::install_signal_cleanup();  // Ctrl-C or SIGTERM: no staging file is left behind
   int code = 0;
   std::string message;

@@ -13,6 +13,7 @@
 #include "stratum/analysis/integrate_tolerance.hpp"
 #include "stratum/analysis/dimension_study.hpp"
 #include "stratum/analysis/importance_study.hpp"
+#include "stratum/analysis/mis_study.hpp"
 #include "stratum/analysis/integrands.hpp"
 #include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
@@ -249,7 +250,50 @@ py::dict study_importance(unsigned runs, std::uint64_t samples, const std::vecto
                   py::arg("light") = comparison_columns(study.light));
 }
 
+/// The MIS study as columns (one row per (exponent, angle), exponents outer),
+/// each method's fields suffixed by its name: variance_light, ...
+py::dict study_mis(const std::vector<double>& exponents, const std::vector<double>& angles, unsigned runs,
+                   std::uint64_t samples, double beta, std::uint64_t seed, unsigned threads) {
+  sa::MisStudyRequest request;
+  request.exponents = exponents, request.angles = angles, request.runs = runs, request.samples = samples;
+  request.beta = beta, request.seed = seed, request.threads = threads;
+  sa::MisStudy study;
+  {
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
+    study = sa::run_mis_study(request);
+  }
+  std::vector<double> exponent, angle, exact, balance_over_best, power_over_best, balance_bound;
+  std::vector<std::string> best;
+  for (const auto& c : study.cases) {
+    exponent.push_back(c.exponent), angle.push_back(c.angle), exact.push_back(c.exact);
+    balance_over_best.push_back(c.balance_over_best), power_over_best.push_back(c.power_over_best);
+    balance_bound.push_back(c.balance_bound), best.push_back(c.best_single);
+  }
+  py::dict out(py::arg("runs") = study.runs, py::arg("samples") = study.samples, py::arg("beta") = study.beta,
+               py::arg("exponent") = column(exponent), py::arg("angle") = column(angle),
+               py::arg("exact") = column(exact), py::arg("best_single") = best,
+               py::arg("balance_over_best") = column(balance_over_best),
+               py::arg("power_over_best") = column(power_over_best), py::arg("balance_bound") = column(balance_bound));
+  for (std::size_t m = 0; m < (study.cases.empty() ? 0 : study.cases.front().methods.size()); ++m) {
+    std::vector<double> estimate, estimate_se, variance, variance_se, predicted;
+    for (const auto& c : study.cases) {
+      const sa::MisMethodResult& r = c.methods[m];
+      estimate.push_back(r.estimate), estimate_se.push_back(r.estimate_stderr), variance.push_back(r.variance);
+      variance_se.push_back(r.variance_stderr), predicted.push_back(r.predicted_variance);
+    }
+    const std::string suffix = "_" + study.cases.front().methods[m].method;
+    out[py::str("estimate" + suffix)] = column(estimate);
+    out[py::str("estimate_stderr" + suffix)] = column(estimate_se);
+    out[py::str("variance" + suffix)] = column(variance);
+    out[py::str("variance_stderr" + suffix)] = column(variance_se);
+    out[py::str("predicted_variance" + suffix)] = column(predicted);
+  }
+  return out;
+}
+
 void bind_dimension_importance(py::module_& m) {
+  m.def("study_mis", &study_mis, py::arg("exponents"), py::arg("angles"), py::arg("runs"), py::arg("samples"),
+        py::arg("beta"), py::arg("seed"), py::arg("threads"));
   m.def("study_dimension", &study_dimension, py::arg("min_dim"), py::arg("max_dim"), py::arg("min_n"),
         py::arg("max_n"), py::arg("runs"), py::arg("rule"), py::arg("integrand"), py::arg("sobol"), py::arg("seed"),
         py::arg("threads"));

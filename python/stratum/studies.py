@@ -167,7 +167,7 @@ def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = N
 # (append below; extend __all__ with `__all__ += [...]`)
 # ============================================================================
 
-__all__ += ["study_dimension", "study_importance", "rectangle_irradiance"]
+__all__ += ["study_dimension", "study_importance", "study_mis", "rectangle_irradiance"]
 
 
 def _studies_int(name, value, low, high, allowed):
@@ -256,6 +256,30 @@ def study_importance(runs: int = 16, samples: int = 4096, sizes=(0.25, 1.0, 4.0)
     return _stratum.study_importance(runs, samples, _studies_lengths("sizes", sizes),
                                      _studies_lengths("distances", distances), _studies_number("radiance", radiance),
                                      seed, threads)
+
+
+def study_mis(exponents=(1, 10, 100, 1000), angles=(2, 10, 30, 60), runs: int = 16, samples: int = 1024,
+              beta: float = 2.0, seed: int = 0, threads: int = 1) -> dict:
+    """Multiple importance sampling measured (Veach 1997, section 9.2): the
+    light a normalized Phong lobe of exponent e reflects from a round light of
+    half-angle `angles` degrees (exact: 1 - cos^(e+1) a), by light sampling,
+    BSDF sampling, and half of each combined by the balance and the power
+    (exponent `beta`) heuristics.
+
+    Returns a dict of columns, one row per (exponent, angle), exponents outer:
+    exponent, angle, exact, best_single ("light"/"bsdf"), balance_over_best
+    and power_over_best (predicted variance over the better single
+    strategy's), balance_bound (Veach's bound 2 min(V) + I^2), and per method
+    (suffix _light, _bsdf, _balance, _power): estimate, estimate_stderr,
+    variance (per sample), variance_stderr, predicted_variance. The same
+    numbers as `stratum study mis --json`; does not depend on `threads`.
+    """
+    runs = _studies_int("runs", runs, 2, 100000, "must be in [2, 100000] (a standard error needs 2 runs)")
+    samples = _studies_int("samples", samples, 4, 2**32, "must be even, in [4, 2^32]")
+    threads = _checks.threads(threads)
+    seed = _checks.seed(seed)
+    return _stratum.study_mis(_studies_lengths("exponents", exponents), _studies_lengths("angles", angles), runs,
+                              samples, _studies_number("beta", beta), seed, threads)
 
 
 def _studies_number(name, value):

@@ -130,3 +130,21 @@ def test_importance_study():
 def test_bad_input(call, word):
     with pytest.raises(stratum.InvalidArgument, match=word):
         call()
+
+
+def test_study_mis_closed_forms_and_refusals():
+    r = stratum.study_mis(exponents=[1, 10], angles=[10, 60], runs=8, samples=256, seed=1)
+    assert list(r["exponent"]) == [1, 1, 10, 10] and list(r["angle"]) == [10, 60, 10, 60]
+    c = np.cos(np.radians(r["angle"]))
+    np.testing.assert_allclose(r["exact"], 1 - c ** (r["exponent"] + 1), rtol=1e-14)
+    q = r["exact"]
+    # BSDF sampling estimates the indicator of the light: variance q (1 - q).
+    np.testing.assert_allclose(r["predicted_variance_bsdf"], q * (1 - q), rtol=1e-12)
+    assert all(b in ("light", "bsdf") for b in r["best_single"])
+    assert np.all(r["predicted_variance_balance"] <= r["balance_bound"] * (1 + 1e-9))
+    with pytest.raises(stratum.InvalidArgument, match=r"invalid angle = 0"):
+        stratum.study_mis(angles=[0])
+    with pytest.raises(stratum.InvalidArgument, match=r"invalid samples = 6\b|invalid samples = 7"):
+        stratum.study_mis(samples=7)
+    with pytest.raises(stratum.InvalidArgument, match="invalid beta"):
+        stratum.study_mis(beta="2")

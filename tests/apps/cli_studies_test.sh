@@ -14,9 +14,9 @@ version=$(sed -n 's/^project(stratum VERSION \([0-9.]*\).*/\1/p' "$(dirname "${B
 [ -n "$version" ] && [ "$("$stratum" --version)" = "stratum $version" ] && ok || fail "--version prints stratum $version"
 # study --help lists the studies, and the top-level help names them instead of pointing to study --help.
 "$stratum" study --help >"$tmp/help" && ok || fail "study --help"
-for name in mitchell dimension importance; do grep -q "^  $name " "$tmp/help" && ok || fail "study --help lists $name"; done
+for name in mitchell dimension importance mis; do grep -q "^  $name " "$tmp/help" && ok || fail "study --help lists $name"; done
 "$stratum" --help | grep '^  study ' >"$tmp/help"
-grep -q 'mitchell, dimension or importance' "$tmp/help" && ! grep -q 'study --help' "$tmp/help" && ok \
+grep -q 'mitchell, dimension, importance or mis' "$tmp/help" && ! grep -q 'study --help' "$tmp/help" && ok \
   || fail "--help describes study: $(cat "$tmp/help")"
 rm -f "$tmp/help"
 
@@ -106,4 +106,22 @@ if [ "$(id -u)" != 0 ]; then
   chmod 755 "$tmp/ro"
 fi
 
+# study mis: JSON = Python's columns, the closed form, and the refusals.
+"$stratum" study mis --exponents 1,100 --angles 2,30 --runs 4 --samples 64 --seed 2 --json >"$tmp/mis.json" && ok || fail "study mis --json"
+PYTHONPATH="$(dirname "$stratum")/../python" /usr/bin/python3 - "$tmp/mis.json" <<'PY' && ok || fail "study mis: CLI = Python"
+import json, math, sys
+import stratum
+d = json.load(open(sys.argv[1]))
+py = stratum.study_mis(exponents=[1, 100], angles=[2, 30], runs=4, samples=64, seed=2)
+assert len(d["cases"]) == 4 and d["runs"] == 4 and d["samples"] == 64
+for k, c in enumerate(d["cases"]):
+    assert c["exact"] == py["exact"][k] == -math.expm1((c["exponent"] + 1) * math.log(math.cos(math.radians(c["angle"]))))
+    assert [m["method"] for m in c["methods"]] == ["light", "bsdf", "balance", "power"]
+    for m in c["methods"]:
+        assert m["variance"] == py["variance_" + m["method"]][k] and m["estimate"] == py["estimate_" + m["method"]][k]
+PY
+"$stratum" study mis --exponents 10 --angles 10 --runs 2 --samples 8 | grep -q "bal/best" && ok || fail "study mis table"
+expect_error "invalid angle = 95" study mis --angles 95
+expect_error "invalid samples = 5" study mis --samples 5
+expect_error "invalid runs = 1" study mis --runs 1
 finish
