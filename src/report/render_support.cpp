@@ -68,6 +68,18 @@ std::vector<double> absolute_difference(const render::Image& image, const render
   return difference;
 }
 
+std::vector<double> displayed_difference(const render::Image& image, const render::Image& other) {
+  const auto shown = [](const render::Image& source) {
+    render::Image out = source;
+    for (double& v : out.rgb) {
+      const double c = std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0);
+      v = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+    }
+    return out;
+  };
+  return absolute_difference(shown(image), shown(other));
+}
+
 std::vector<bool> box_mask(const PixelBox& box, int width, int height) {
   std::vector<bool> mask(std::size_t(width) * height, false);
   for (int y = box.y; y < box.y + box.height; ++y)
@@ -94,7 +106,7 @@ nlohmann::json rounded(const std::vector<double>& values) {
 }  // namespace
 
 nlohmann::json picture_grid(const std::vector<GridColumn>& columns, const std::vector<Crop>& crops,
-                            const render::Image* baseline, const std::string& difference_title) {
+                            const render::Image* baseline, const std::string& difference_title, bool displayed) {
   nlohmann::json panels = nlohmann::json::array();
   for (const GridColumn& column : columns) {
     nlohmann::json panel = image_panel(*column.image, column.title);
@@ -115,7 +127,9 @@ nlohmann::json picture_grid(const std::vector<GridColumn>& columns, const std::v
     std::vector<std::vector<double>> differences;
     std::vector<double> all;
     for (const GridColumn& column : columns) {
-      differences.push_back(column.image == baseline ? std::vector<double>{} : absolute_difference(*column.image, *baseline));
+      differences.push_back(column.image == baseline ? std::vector<double>{}
+                            : displayed ? displayed_difference(*column.image, *baseline)
+                                        : absolute_difference(*column.image, *baseline));
       all.insert(all.end(), differences.back().begin(), differences.back().end());
     }
     const double scale = std::max(quantile(all, 0.99), 1e-6);

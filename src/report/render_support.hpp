@@ -59,6 +59,11 @@ render::Image crop_image(const render::Image& image, const PixelBox& box);
 /// |luminance(image) − luminance(other)| per pixel, row-major.
 std::vector<double> absolute_difference(const render::Image& image, const render::Image& other);
 
+/// The same of the values as displayed: each channel clamped to [0, 1] and
+/// sRGB-encoded, as the PNG shows it (so that a bright light's blurred edge
+/// does not outshine every other difference).
+std::vector<double> displayed_difference(const render::Image& image, const render::Image& other);
+
 /// Per-pixel flags of the pixels inside `box` (for masked_mean_squared_error).
 std::vector<bool> box_mask(const PixelBox& box, int width, int height);
 
@@ -72,10 +77,11 @@ struct GridColumn {
 /// with every crop outlined, then one row per crop (the crop enlarged),
 /// then, when `baseline` is given, the heat map of |luminance − baseline's|
 /// on one colour scale (the 99th percentile of the row's differences;
-/// blank under the baseline itself) with `difference_title` above it.
+/// blank under the baseline itself) with `difference_title` above it;
+/// `displayed`: of the displayed values (displayed_difference).
 /// The grid is columns.size() wide.
 nlohmann::json picture_grid(const std::vector<GridColumn>& columns, const std::vector<Crop>& crops,
-                            const render::Image* baseline, const std::string& difference_title);
+                            const render::Image* baseline, const std::string& difference_title, bool displayed = false);
 
 /// A render's mean squared error against `reference` and its mean
 /// per-sample variance inside `box`.
