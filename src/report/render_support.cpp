@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sections.hpp"
@@ -11,6 +12,153 @@ namespace stratum::report {
 
 RenderScale render_scale(const SectionContext& context) {
   return context.quick() ? RenderScale{32, 32, 64} : RenderScale{96, 96, 1024};
+}
+
+RenderScale picture_scale(const SectionContext& context) {
+  return context.quick() ? RenderScale{32, 32, 64, 64} : RenderScale{256, 256, 256, 64};
+}
+
+render::ComparisonScene large_light_box(int width, int height) {
+  render::ComparisonScene box = render::comparison_scene("", false, width, height);
+  render::Scene& scene = box.scene;
+  constexpr double side = 300;
+  for (render::Shape& shape : scene.shapes) {
+    render::Material& material = scene.materials.at(shape.material);
+    if (shape.type != render::ShapeType::quad || material.emission.x <= 0) continue;
+    const render::Vec3 centre = shape.corner + 0.5 * shape.edge_u + 0.5 * shape.edge_v;
+    const double area = length(shape.edge_u) * length(shape.edge_v);
+    shape.edge_u = (side / length(shape.edge_u)) * shape.edge_u;
+    shape.edge_v = (side / length(shape.edge_v)) * shape.edge_v;
+    shape.corner = centre - 0.5 * shape.edge_u - 0.5 * shape.edge_v;
+    material.emission = (area / (side * side)) * material.emission;
+  }
+  scene.name = "cornell-box-large-light";
+  render::validate_scene(scene);
+  box.key = render::scene_fingerprint(scene);
+  return box;
+}
+
+PixelBox crop_pixels(const Crop& crop, int width, int height) {
+  PixelBox box;
+  box.x = std::clamp(int(std::lround(crop.x * width)), 0, width - 1);
+  box.y = std::clamp(int(std::lround(crop.y * height)), 0, height - 1);
+  box.width = std::clamp(int(std::lround(crop.width * width)), 1, width - box.x);
+  box.height = std::clamp(int(std::lround(crop.height * height)), 1, height - box.y);
+  return box;
+}
+
+render::Image crop_image(const render::Image& image, const PixelBox& box) {
+  render::Image crop;
+  crop.width = box.width;
+  crop.height = box.height;
+  crop.samples = image.samples;
+  crop.seconds = image.seconds;
+  for (int y = box.y; y < box.y + box.height; ++y)
+    for (int x = box.x; x < box.x + box.width; ++x) {
+      const std::size_t p = 3 * (std::size_t(y) * image.width + x);
+      crop.rgb.insert(crop.rgb.end(), image.rgb.begin() + p, image.rgb.begin() + p + 3);
+      if (!image.variance.empty()) crop.variance.insert(crop.variance.end(), image.variance.begin() + p, image.variance.begin() + p + 3);
+    }
+  return crop;
+}
+
+std::vector<double> absolute_difference(const render::Image& image, const render::Image& other) {
+  std::vector<double> difference = render::luminance_error(image, other);
+  for (double& d : difference) d = std::fabs(d);
+  return difference;
+}
+
+std::vector<double> displayed_difference(const render::Image& image, const render::Image& other) {
+  const auto shown = [](const render::Image& source) {
+    render::Image out = source;
+    for (double& v : out.rgb) {
+      const double c = std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0);
+      v = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+    }
+    return out;
+  };
+  return absolute_difference(shown(image), shown(other));
+}
+
+std::vector<bool> box_mask(const PixelBox& box, int width, int height) {
+  std::vector<bool> mask(std::size_t(width) * height, false);
+  for (int y = box.y; y < box.y + box.height; ++y)
+    for (int x = box.x; x < box.x + box.width; ++x) mask[std::size_t(y) * width + x] = true;
+  return mask;
+}
+
+namespace {
+
+/// The q-quantile of all values (0 for none).
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0;
+  const auto at = values.begin() + std::ptrdiff_t(q * double(values.size() - 1));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
+}
+
+nlohmann::json rounded(const std::vector<double>& values) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const double v : values) out.push_back(std::isfinite(v) ? std::round(v * 1e5) / 1e5 : 0.0);
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json picture_grid(const std::vector<GridColumn>& columns, const std::vector<Crop>& crops,
+                            const render::Image* baseline, const std::string& difference_title, bool displayed) {
+  nlohmann::json panels = nlohmann::json::array();
+  for (const GridColumn& column : columns) {
+    nlohmann::json panel = image_panel(*column.image, column.title);
+    nlohmann::json boxes = nlohmann::json::array();
+    for (const Crop& crop : crops) {
+      const PixelBox box = crop_pixels(crop, column.image->width, column.image->height);
+      boxes.push_back({box.x, box.y, box.width, box.height});
+    }
+    panel["boxes"] = boxes;
+    panels.push_back(std::move(panel));
+  }
+  for (const Crop& crop : crops)
+    for (const GridColumn& column : columns) {
+      const PixelBox box = crop_pixels(crop, column.image->width, column.image->height);
+      panels.push_back(image_panel(crop_image(*column.image, box), crop.label + " (enlarged)"));
+    }
+  if (baseline) {
+    std::vector<std::vector<double>> differences;
+    std::vector<double> all;
+    for (const GridColumn& column : columns) {
+      differences.push_back(column.image == baseline ? std::vector<double>{}
+                            : displayed ? displayed_difference(*column.image, *baseline)
+                                        : absolute_difference(*column.image, *baseline));
+      all.insert(all.end(), differences.back().begin(), differences.back().end());
+    }
+    const double scale = std::max(quantile(all, 0.99), 1e-6);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (differences[c].empty()) {
+        panels.push_back({{"blank", true}});
+        continue;
+      }
+      panels.push_back({{"title", fmt::format("{}\n(dark 0, bright ≥ {})", difference_title, format_number(scale, 2))},
+                        {"width", columns[c].image->width},
+                        {"height", columns[c].image->height},
+                        {"heat", rounded(differences[c])},
+                        {"scale", scale}});
+    }
+  }
+  return panels;
+}
+
+nlohmann::json comparison_grid(const RenderedComparison& comparison, const std::vector<Crop>& crops) {
+  std::vector<GridColumn> columns{{&comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)}};
+  for (std::size_t i = 0; i < comparison.rows.size(); ++i)
+    columns.push_back({&comparison.images[i], fmt::format("{}\nMSE {}", comparison.rows[i].label,
+                                                          format_number(comparison.rows[i].mse))});
+  return picture_grid(columns, crops, &comparison.reference, "|error| against the reference");
+}
+
+RegionError region_error(const render::Image& image, const render::Image& reference, const PixelBox& box) {
+  const render::Image crop = crop_image(image, box);
+  return {masked_mean_squared_error(image, reference, box_mask(box, image.width, image.height)), mean_sample_variance(crop)};
 }
 
 RenderedComparison run_comparison(const render::ComparisonScene& scene, const std::vector<render::CompareConfig>& configs,

@@ -1,5 +1,5 @@
-/// §5 Sampling a disk: a stratified grid pushed through the polar map
-/// (θ = 2πu₁, r = √u₂) and Shirley's concentric map (Shirley & Chiu 1997,
+/// §5 Sampling a disk: a stratified grid, and its cells' boundaries, pushed
+/// through the polar map (θ = 2πu₁, r = √u₂) and Shirley's concentric map (Shirley & Chiu 1997,
 /// "A low distortion map between disk and square"). Measured: how compact
 /// the images of the strata stay (isoperimetric ratio P²/4πA, 1 for a
 /// circle, 4/π for a square) and the variance of jittered estimates of an
@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "sections.hpp"
@@ -54,6 +55,28 @@ Compactness strata_compactness(const Warp& warp, int cells) {
   return result;
 }
 
+/// The images of the grid's cell boundaries under `warp`: every line
+/// u = i/cells and v = j/cells as a polyline of `steps` + 1 points
+/// ([[x...], [y...]]), the far edges kept just inside [0, 1).
+nlohmann::json warped_grid_lines(const Warp& warp, int cells, int steps) {
+  nlohmann::json lines = nlohmann::json::array();
+  const double last = std::nextafter(1.0, 0.0);
+  for (int axis = 0; axis < 2; ++axis)
+    for (int k = 0; k <= cells; ++k) {
+      std::vector<double> u;
+      for (int s = 0; s <= steps; ++s) {
+        const double along = std::min(double(s) / steps, last), across = std::min(double(k) / cells, last);
+        u.push_back(axis == 0 ? across : along);
+        u.push_back(axis == 0 ? along : across);
+      }
+      const auto p = warp_sample(warp, u.data(), u.size() / 2);
+      std::vector<double> x, y;
+      for (std::size_t i = 0; i < p.size() / 2; ++i) x.push_back(std::round(p[2 * i] * 1e5) / 1e5), y.push_back(std::round(p[2 * i + 1] * 1e5) / 1e5);
+      lines.push_back({x, y});
+    }
+  return lines;
+}
+
 /// Fraction of the unit disk on the far side of the line n·p = c (|n| = 1):
 /// the circular segment's area (acos c − c√(1−c²)) over π.
 double segment_fraction(double c) { return (std::acos(c) - c * std::sqrt(1 - c * c)) / std::numbers::pi; }
@@ -84,8 +107,11 @@ Section disk_section(SectionContext& context) {
     x[k] = grid(k, 0);
     y[k] = grid(k, 1);
   }
-  panels.push_back({{"title", fmt::format("jittered {}×{} grid", cells, cells)}, {"x", x}, {"y", y}, {"color", stratum},
-                    {"grid", cells}});
+  panels.push_back({{"title", fmt::format("jittered {}×{} grid (U₁, U₂)", cells, cells)}, {"x", x}, {"y", y},
+                    {"color", stratum}, {"grid", cells}});
+  const std::map<std::string, std::string> formulas = {
+      {"polar", "polar: θ = 2πU₁, r = √U₂"},
+      {"concentric", "concentric: r = U₁, θ = πU₂/(4U₁)"}};
 
   // Edge integrand: the indicator of x + y/2 > 0.25 over the disk.
   const double norm = std::hypot(1.0, 0.5), offset = 0.25 / norm;
@@ -98,7 +124,8 @@ Section disk_section(SectionContext& context) {
     const auto mapped = warp_sample(*warp, grid.data.get(), n);
     std::vector<double> mx(n), my(n);
     for (std::size_t k = 0; k < n; ++k) mx[k] = mapped[2 * k], my[k] = mapped[2 * k + 1];
-    panels.push_back({{"title", label + " map"}, {"x", mx}, {"y", my}, {"color", stratum}, {"disk", true}});
+    panels.push_back({{"title", formulas.at(label)}, {"x", mx}, {"y", my}, {"color", stratum}, {"disk", true},
+                      {"lines", warped_grid_lines(*warp, cells, 64)}});
 
     const Compactness compactness = strata_compactness(*warp, cells);
     double sum = 0, sum_squares = 0;
@@ -125,6 +152,11 @@ Section disk_section(SectionContext& context) {
   section.numbers["points"] = n;
   const auto& polar = section.numbers["polar"];
   const auto& concentric = section.numbers["concentric"];
+  section.text.push_back(
+      "The polar map takes θ = 2πU₁ and r = √U₂ (the square root makes it equi-areal: the disk's area within "
+      "radius r is πr²). Shirley and Chiu's concentric map first rescales (U₁, U₂) to the square [−1, 1]², then "
+      "on the wedge |U₂| ≤ U₁ takes r = U₁ and θ = πU₂/(4U₁) (the lecture's formula; the other three wedges by "
+      "symmetry), so that the square of half-side r lands on the circle of radius r.");
   section.text.push_back(fmt::format(
       "Both maps are equi-areal, so a stratified grid stays stratified on the disk; but the polar map stretches "
       "strata into slivers (mean isoperimetric ratio {}, worst {}) while the concentric map keeps them compact "
@@ -136,8 +168,14 @@ Section disk_section(SectionContext& context) {
       "Over {} jittered sets of {} points, the variance of the estimated area beyond an edge (exact {}) through the "
       "polar map is {}× that through the concentric map.",
       runs, n, format_number(exact, 4), format_number(variances[0] / variances[1])));
-  section.figures.push_back(context.plot("report_points", {{"columns", 3}, {"panels", panels}}, "maps",
-                                         "A jittered grid, coloured by stratum, and its images under the two maps"));
+  section.figures.push_back(context.plot(
+      "report_points", {{"columns", 3}, {"size", 3.4}, {"panels", panels}}, "maps",
+      fmt::format("A jittered {0}×{0} grid, coloured by stratum, and its images under the two maps with the strata's "
+                  "boundaries drawn: the polar map (θ = 2πU₁, r = √U₂) turns the strata into thin wedges and rings, "
+                  "Shirley and Chiu's concentric map (on the wedge |U₂| ≤ U₁ of the square [−1, 1]², r = U₁, "
+                  "θ = πU₂/(4U₁); the other wedges by symmetry) sends concentric squares to concentric circles and "
+                  "keeps the strata compact",
+                  cells)));
   section.tables.push_back(std::move(table));
   section.try_it = {"stratum warp -m disk-concentric -s jittered -n 256"};
   return section;

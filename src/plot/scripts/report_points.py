@@ -3,9 +3,11 @@ points in the unit square or the unit disk, optionally coloured by stratum,
 with grid lines and 1D projections drawn as ticks under and beside it.
 Data: {"columns": C, "size": inches per panel, "title": "...",
        "panels": [{"title", "x", "y", "color" (optional ints), "grid" (optional
-       cells per axis), "disk" (bool), "projections" (bool), "line" (optional
+       cells per axis), "disk" (bool), "side" (bool: the upper half of
+       the disk, for a hemisphere seen from the side), "projections" (bool), "line" (optional
        {"angle", "offset"}: the line cos(angle) x + sin(angle) y = offset, drawn
-       with the side cos(angle) x + sin(angle) y < offset shaded)}]}
+       with the side cos(angle) x + sin(angle) y < offset shaded), "lines"
+       (optional [[xs, ys], ...]: polylines drawn under the points)}]}
 Usage: python3 report_points.py DATA.json OUT.png"""
 import json
 import math
@@ -60,6 +62,8 @@ for index, axes in enumerate(axes_grid.flat):
                  cmap="hsv" if color is not None else None, linewidths=0)
     if disk:
         axes.add_patch(plt.Circle((0, 0), 1, fill=False, color="0.5", linewidth=0.8))
+    for polyline in panel.get("lines", []):
+        axes.plot(polyline[0], polyline[1], color="0.35", linewidth=0.6, zorder=1)
     cells = panel.get("grid", 0)
     for k in range(1, cells):
         axes.axhline(k / cells, color="0.8", linewidth=0.5, zorder=0)
@@ -72,7 +76,7 @@ for index, axes in enumerate(axes_grid.flat):
         draw_line(axes, panel["line"])
     margin = 0.06 if panel.get("projections", False) else 0.01
     axes.set_xlim(low - margin, 1.01)
-    axes.set_ylim(low - margin, 1.01)
+    axes.set_ylim(-0.04 if panel.get("side", False) else low - margin, 1.01)
     axes.set_aspect("equal")
     axes.set_xticks([])
     axes.set_yticks([])
