@@ -13,6 +13,7 @@
 #include <cstdlib>
 
 #include "render_support.hpp"
+#include "repeated_comparison.hpp"
 #include "sections.hpp"
 #include "stratum/spacetime/cook_pattern.hpp"
 #include "stratum/spacetime/magic_square.hpp"
@@ -180,43 +181,79 @@ Section space_time_section(SectionContext& context) {
       "column sums outside the grid"));
   section.tables.push_back(std::move(sums_table));
 
-  // Motion blur with each assignment.
+  // Motion blur with each assignment, over several seeds (paired: every
+  // assignment of a repeat shares the film, lens and light samples).
   const RenderScale scale = render_scale(context);
   const auto scene = render::comparison_scene("", true, scale.width, scale.height);
   const auto configs = render::builtin_comparison("time-pattern", context.threads(), context.seed());
-  const RenderedComparison comparison = run_comparison(scene, configs, scale.reference_spp, context.cache_dir());
+  render::CompareOptions options;
+  options.reference_spp = scale.reference_spp;
+  options.cache_dir = context.cache_dir();
+  const unsigned repeats = context.quick() ? 4 : 8;
+  const RepeatedComparison comparison = run_repeated_comparison(scene, configs, options, repeats);
   // The pixels whose value depends on the time assignment: where the renders
-  // differ (the same film, lens and light samples go to every configuration,
-  // so elsewhere the images agree and the error is common to all).
+  // of a repeat differ (the assignments change only the samples' times, so
+  // elsewhere the images agree and the error is common to all), in any repeat.
   const std::size_t pixels = std::size_t(scale.width) * scale.height;
   std::vector<bool> moving(pixels, false);
-  std::size_t moving_count = 0;
-  for (std::size_t p = 0; p < pixels; ++p) {
-    for (std::size_t i = 1; i < comparison.images.size() && !moving[p]; ++i)
-      for (int c = 0; c < 3; ++c) moving[p] = moving[p] || comparison.images[i].rgb[3 * p + c] != comparison.images[0].rgb[3 * p + c];
-    moving_count += moving[p];
-  }
+  for (const auto& images : comparison.images)
+    for (std::size_t p = 0; p < pixels; ++p)
+      for (std::size_t i = 1; i < images.size() && !moving[p]; ++i)
+        for (int c = 0; c < 3; ++c) moving[p] = moving[p] || images[i].rgb[3 * p + c] != images[0].rgb[3 * p + c];
+  const std::size_t moving_count = std::size_t(std::count(moving.begin(), moving.end(), true));
+  std::vector<std::vector<double>> region_mse(configs.size());
+  for (const auto& images : comparison.images)
+    for (std::size_t i = 0; i < images.size(); ++i)
+      region_mse[i].push_back(masked_mean_squared_error(images[i], comparison.reference, moving));
+  const std::vector<RowStatistics> whole = row_statistics(comparison, comparison.mse);
+  const std::vector<RowStatistics> local = row_statistics(comparison, region_mse);
+
+  nlohmann::json render_panels = nlohmann::json::array();
+  render_panels.push_back(image_panel(comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)));
+  for (std::size_t i = 0; i < configs.size(); ++i)
+    render_panels.push_back(image_panel(comparison.images[0][i],
+                                 fmt::format("{}\nMSE {}", configs[i].label, format_number(comparison.mse[i][0]))));
+  nlohmann::json mask_image = image_panel(comparison.reference, "pixels that depend on time");
+  for (std::size_t p = 0; p < pixels; ++p)
+    for (int c = 0; c < 3; ++c) mask_image["rgb"][3 * p + c] = moving[p] ? 1.0 : 0.0;
+  render_panels.push_back(mask_image);
   section.figures.push_back(image_figure(
-      context, comparison_panels(comparison), "motion-blur",
+      context, render_panels, "motion-blur",
       fmt::format("The Cornell box with a moving sphere, {}×{} pixels, {} samples per pixel: the reference, then time "
-                  "assigned to the 4×4 strata at random, by Cook's pattern and by the magic square",
-                  scale.width, scale.height, comparison.rows.front().samples)));
-  section.tables.push_back(comparison_table(
-      comparison, fmt::format("Motion blur against a {}-spp reference (whole image)", comparison.reference_spp)));
-  Table region{fmt::format("MSE over the {} pixels whose value depends on the time assignment", moving_count),
-               {"time assignment", "MSE (those pixels)", "ratio (random / this)"},
+                  "assigned to the 4×4 strata at random, by Cook's pattern and by the magic square (first seed), and "
+                  "in white the {} pixels whose value depends on the time assignment",
+                  scale.width, scale.height, configs.front().settings.sampler.spp, moving_count)));
+  const std::string method = interval_method(repeats);
+  section.tables.push_back(repeated_table(
+      comparison, whole,
+      fmt::format("Motion blur against a {}-spp reference, whole image ({})", comparison.reference_spp, method)));
+  Table region{fmt::format("MSE over the {} of {} pixels whose value depends on the time assignment ({} seeds, 95% "
+                           "t intervals on log ratios)",
+                           moving_count, pixels, repeats),
+               {"time assignment", "MSE on those pixels (mean ± s.e.)", "ratio random/this (95% CI)"},
                {}};
-  section.numbers["motion_blur"] = comparison_numbers(comparison);
-  section.numbers["motion_blur"]["time_dependent_pixels"] = moving_count;
-  std::vector<double> region_mse;
-  for (std::size_t i = 0; i < comparison.rows.size(); ++i)
-    region_mse.push_back(masked_mean_squared_error(comparison.images[i], comparison.reference, moving));
-  for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
-    const double ratio = region_mse[i] > 0 ? region_mse[0] / region_mse[i] : 0;
-    region.rows.push_back({comparison.rows[i].label, format_number(region_mse[i]), format_number(ratio)});
-    section.numbers["motion_blur"]["rows"][comparison.rows[i].label]["time_dependent_mse"] = region_mse[i];
-  }
+  for (std::size_t i = 0; i < configs.size(); ++i)
+    region.rows.push_back({configs[i].label,
+                           format_number(local[i].mse.mean) + " ± " + format_number(local[i].mse.standard_error, 2),
+                           i == 0 ? "1 (baseline)" : format_interval(local[i].mse_ratio)});
   section.tables.push_back(std::move(region));
+  section.numbers["motion_blur"] = repeated_numbers(comparison, whole);
+  section.numbers["motion_blur"]["time_dependent_pixels"] = moving_count;
+  section.numbers["motion_blur"]["pixels"] = pixels;
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    auto& row = section.numbers["motion_blur"]["rows"][configs[i].label];
+    row["time_dependent_mse_per_seed"] = region_mse[i];
+    row["time_dependent_mse_mean"] = local[i].mse.mean;
+    row["time_dependent_mse_standard_error"] = local[i].mse.standard_error;
+    row["time_dependent_mse_ratio"] = interval_json(local[i].mse_ratio);
+    // Seed 0's per-sample variance: the unbiasedness check of the tests.
+    row["sample_variance"] = mean_sample_variance(comparison.images[0][i]);
+  }
+  section.numbers["motion_blur"]["reference_variance"] = [&] {
+    double sum = 0;
+    for (const double v : comparison.reference.variance) sum += v;
+    return comparison.reference.variance.empty() ? 0.0 : sum / double(comparison.reference.variance.size());
+  }();
 
   const auto& cook = section.numbers["tables"]["Cook pattern"];
   section.text.push_back(fmt::format(
@@ -226,16 +263,25 @@ Section space_time_section(SectionContext& context) {
       "at least {} slots apart.",
       target, magic_flags[1] ? "pan-diagonal magic" : "not magic", magic_flags[0] ? "also does" : "does not",
       join(cook["row_sums"].get<std::vector<std::uint64_t>>()), cook["neighbour_separation"].get<std::uint32_t>()));
-  std::string whole, local;
-  for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
-    const std::string separator = i == 0 ? "" : i + 1 == comparison.rows.size() ? " and " : ", ";
-    whole += separator + fmt::format("{} with {}", format_number(comparison.rows[i].mse), comparison.rows[i].label);
-    local += separator + fmt::format("{} with {}", format_number(region_mse[i]), comparison.rows[i].label);
+  std::string whole_text, local_text;
+  for (std::size_t i = 1; i < configs.size(); ++i) {
+    const std::string separator = i == 1 ? "" : " and ";
+    whole_text += separator + fmt::format("{} for {}", format_interval(whole[i].mse_ratio), configs[i].label);
+    local_text += separator + fmt::format("{} for {}", format_interval(local[i].mse_ratio), configs[i].label);
   }
+  std::string timing;
+  for (std::size_t i = 1; i < configs.size(); ++i)
+    timing += (i == 1 ? "" : "; ") + fmt::format("{} {}", configs[i].label, efficiency_text(whole[i]));
   section.text.push_back(fmt::format(
-      "Rendered with {} samples per pixel against a {}-spp reference, the whole-image MSE is {}; over the {} pixels "
-      "where the renders differ (elsewhere they agree, so their error there is common to all) it is {}.",
-      comparison.rows.front().samples, comparison.reference_spp, whole, moving_count, local));
+      "Rendered with {} samples per pixel against a {}-spp reference over {} seeds, the whole-image MSE of random "
+      "time is {} ± {}, and the ratio random/this is {}: only {} of the {} pixels depend on the time "
+      "assignment, so the rest of the image dilutes the effect. Over those {} pixels alone the ratio is {}.",
+      configs.front().settings.sampler.spp, comparison.reference_spp, repeats, format_number(whole[0].mse.mean),
+      format_number(whole[0].mse.standard_error, 2), whole_text, moving_count, pixels, moving_count, local_text));
+  section.text.push_back(fmt::format(
+      "Every assignment traces the same rays, so the efficiency ratio should equal the MSE ratio; it is quoted only "
+      "where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",
+      timing, method));
   screen_space_error(context, section);
   section.try_it = {"stratum compare --builtin time-pattern --width 64 --height 64",
                     "stratum render scenes/penumbra.json --sampler zsobol --spp 1 --exr z.exr && stratum render "
