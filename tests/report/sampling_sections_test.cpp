@@ -12,9 +12,12 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <random>
 #include <set>
 
+#include "report/jittered_edge.hpp"
 #include "section_harness.hpp"
+#include "stratum/analysis/integrands.hpp"
 
 namespace stratum::report {
 namespace {
@@ -91,12 +94,86 @@ TEST(ReportSamplingSections, StratificationSlopesAndRandomVariances) {
   EXPECT_NEAR(slope("smooth", "jittered:none"), -2.0, 0.3);
   EXPECT_LT(slope("smooth", "sobol:owen"), -2.5);
   EXPECT_LT(slope("smooth", "pmj02:none"), -2.5);
+  // The slanted edge joins the study, and jittered's measured variance agrees
+  // with the exact Σ a_i(1 − a_i)/N² on both edges: (R − 1) s²/σ² ~ χ²(R − 1)
+  // for normal estimates, taken from N = 256 on (at least 16 cut cells, whose
+  // Bernoulli sum is near normal); family α = 1e-3 over both edges (Šidák).
+  ASSERT_TRUE(numbers.at("slanted_edge").at("samplers").contains("jittered:none"));
+  const auto& prediction = numbers.at("jittered_prediction");
+  ASSERT_EQ(prediction.size(), counts);
+  std::size_t tested = 0;
+  for (const auto& row : prediction) tested += row["n"].get<double>() >= 256 ? 2 : 0;
+  const auto [low_p, high_p] = chi_squared_interval(runs - 1, sidak(1e-3, double(tested)));
+  for (const auto& row : prediction) {
+    EXPECT_GE(row["slanted_edge_cut_cells"].get<double>(), row["grid"].get<double>());  // a slanted line cuts ≥ n cells
+    if (row["n"].get<double>() < 256) continue;
+    for (const char* key : {"edge_measured_over_predicted", "slanted_edge_measured_over_predicted"}) {
+      EXPECT_GT((runs - 1) * row[key].get<double>(), low_p) << key << " N = " << row["n"];
+      EXPECT_LT((runs - 1) * row[key].get<double>(), high_p) << key << " N = " << row["n"];
+    }
+  }
   // The sentence quotes the measured jittered slope.
   EXPECT_NE(run.section.text[0].find(format_number(slope("edge", "jittered:none"))), std::string::npos);
   // latin-square makes only 3D points: validate_report_options refuses it before a report runs, and the
   // section, given it anyway, leaves it out and says so.
   EXPECT_FALSE(numbers.at("edge").at("samplers").contains("latin-square:none"));
   EXPECT_EQ(numbers.at("skipped_extras"), nlohmann::json::array({"latin-square"}));
+}
+
+// The exact jittered variance of an edge, Σ a_i(1 − a_i)/N², against a
+// brute-force Monte Carlo: R independent jittered estimates (one uniform point
+// per cell, std::mt19937_64, fixed seed) of the registry's own integrands
+// (the step and the slanted edge-random of §4), so the half-planes are checked
+// too. The sample variance s² of R = 20000 estimates has standard error
+// √((m4 − s⁴)/R) (m4 the fourth central moment); |s² − exact| < 4.5 of them
+// per test (two-sided α ≈ 6.8e-6), 6 tests: family α < 5e-5.
+TEST(JitteredEdgeVariance, ExactFormulaAgainstBruteForceMonteCarlo) {
+  const std::uint64_t slanted_seed = 10;  // section_stratification.cpp's slanted edge
+  const std::vector<std::pair<HalfPlane, std::unique_ptr<const analysis::Integrand>>> edges = [&] {
+    std::vector<std::pair<HalfPlane, std::unique_ptr<const analysis::Integrand>>> list;
+    list.emplace_back(HalfPlane{{1 / std::numbers::pi, 0}, {1, 0}}, analysis::make_integrand("step", 2));
+    list.emplace_back(random_edge_half_plane(slanted_seed),
+                      analysis::make_integrand("edge-random", 2, {{"seed", {double(slanted_seed)}}}));
+    return list;
+  }();
+  std::mt19937_64 generator(20261202);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  const int repeats = 20000;
+  for (const auto& [plane, integrand] : edges) {
+    // The half-plane is the integrand's: equal areas over the square.
+    EXPECT_NEAR(half_plane_area(plane, 0, 0, 1, 1), integrand->exact(), 1e-12);
+    for (const std::uint64_t n : {4u, 8u, 16u}) {
+      std::vector<double> estimates(repeats), points(2 * n * n), values(n * n);
+      for (double& estimate : estimates) {
+        for (std::uint64_t i = 0; i < n; ++i)
+          for (std::uint64_t j = 0; j < n; ++j) {
+            points[2 * (i * n + j)] = (double(i) + uniform(generator)) / double(n);
+            points[2 * (i * n + j) + 1] = (double(j) + uniform(generator)) / double(n);
+          }
+        integrand->evaluate(points.data(), n * n, values.data());
+        double sum = 0;
+        for (const double v : values) sum += v;
+        estimate = sum / double(n * n);
+      }
+      double mean = 0;
+      for (const double e : estimates) mean += e / repeats;
+      double m2 = 0, m4 = 0;
+      for (const double e : estimates) m2 += (e - mean) * (e - mean) / repeats, m4 += std::pow(e - mean, 4) / repeats;
+      const double s2 = m2 * repeats / (repeats - 1);
+      const double standard_error = std::sqrt((m4 - m2 * m2) / repeats);
+      const double exact = jittered_edge_variance(plane, n);
+      EXPECT_NEAR(s2, exact, 4.5 * standard_error) << "n = " << n << ", exact " << exact;
+      EXPECT_GT(cut_cells(plane, n), 0u);
+    }
+  }
+  // The axis-aligned edge in closed form: one column of n cells, each covered
+  // frac(n/π), so Var = n·a(1 − a)/n⁴; it cuts exactly n cells.
+  const HalfPlane step{{1 / std::numbers::pi, 0}, {1, 0}};
+  for (const std::uint64_t n : {4u, 8u, 64u, 512u}) {
+    const double a = double(n) / std::numbers::pi - std::floor(double(n) / std::numbers::pi);
+    EXPECT_NEAR(jittered_edge_variance(step, n), a * (1 - a) / std::pow(double(n), 3), 1e-12 / std::pow(double(n), 3));
+    EXPECT_EQ(cut_cells(step, n), n);
+  }
 }
 
 TEST(ReportSamplingSections, DimensionMatchesClosedFormMidpointSums) {
