@@ -288,6 +288,37 @@ TEST(ReportSamplingSections, FourViewsAgreeWithWhiteNoiseAndClosedForms) {
   // Stratification lowers the variance: jittered's edge variance is Θ(N^-1.5), i.e. about 1/√N = 1/16 of
   // random's here; a factor 4 is far outside the χ² spread of both.
   EXPECT_LT(patterns["jittered"]["edge_variance"].get<double>(), patterns["random"]["edge_variance"].get<double>() / 4);
+  // The periodic Poisson disk (as §10 and §12 use it) beside the plain one.
+  ASSERT_TRUE(patterns.contains("poisson-disk(periodic=1)"));
+  // Quadrature rules at the same N: the product midpoint rule of the separable
+  // Gaussian is the square of the 1D midpoint sum (an independent oracle);
+  // product Gauss–Legendre with √N = 16 nodes a side is exact to rounding on
+  // it (its error bound is ~ (2^-(2·16)) · f^(32)/32!, far below 1e-14) and
+  // so beats every randomized pattern's RMSE.
+  const auto& quadrature = numbers["quadrature"];
+  const int side = quadrature["grid"].get<int>();
+  ASSERT_EQ(side * side, static_cast<int>(n));
+  double one_d = 0;
+  for (int i = 0; i < side; ++i) one_d += std::exp(-std::pow((i + 0.5) / side, 2)) / side;
+  EXPECT_NEAR(quadrature["midpoint"]["gaussian_error"].get<double>(), std::abs(one_d * one_d - gaussian_exact()), 1e-15);
+  EXPECT_LT(quadrature["gauss_legendre"]["gaussian_error"].get<double>(), 1e-14);
+  for (const auto& [name, entry] : patterns.items())
+    EXPECT_LT(quadrature["gauss_legendre"]["gaussian_error"].get<double>(), entry["smooth_rmse"].get<double>()) << name;
+  // On the quarter disk the rules have errors of edge size, not rounding size.
+  EXPECT_GT(quadrature["gauss_legendre"]["disk_error"].get<double>(), 1e-6);
+  EXPECT_GT(quadrature["midpoint"]["disk_error"].get<double>(), 1e-6);
+  // The departure from the lecture is stated from the ranks.
+  bool nets_ahead = true;
+  for (const char* key : {"edge_variance", "star", "l2_star", "smooth_rmse"})
+    for (const char* net : {"sobol:owen", "pmj02"})
+      for (const char* recommended : {"jittered", "poisson-disk(periodic=1)"})
+        nets_ahead = nets_ahead && patterns[net][std::string(key) + "_rank"].get<int>() <
+                                       patterns[recommended][std::string(key) + "_rank"].get<int>();
+  EXPECT_EQ(numbers["nets_ahead_outside_the_spectrum"].get<bool>(), nets_ahead);
+  for (const auto& [name, entry] : patterns.items()) {
+    EXPECT_GE(entry["mean_rank"].get<double>(), 1.0) << name;
+    EXPECT_LE(entry["mean_rank"].get<double>(), double(patterns.size())) << name;
+  }
   // Ranks: each column's best rank is 1 and the ranks stay within the pattern count.
   const std::size_t count = patterns.size();
   for (const char* key : {"low_frequency_power", "effective_nyquist", "peak_power", "edge_variance", "star", "l2_star",
