@@ -142,6 +142,91 @@ void screen_space_error(SectionContext& context, Section& section) {
       format_number(rows[1].mse), format_number(rows[2].low_frequency_power), format_number(rows[3].low_frequency_power)));
 }
 
+/// The field of view of the close-up of the moving sphere.
+constexpr double close_up_fov = 14;
+
+/// The Cornell box seen through a narrow lens aimed at the moving sphere
+/// (centre x 420 → 370 mm while the shutter is open, radius 70), so that the
+/// sphere, its motion and its shadow fill the frame.
+render::ComparisonScene close_up(const RenderScale& scale) {
+  render::ComparisonScene result = render::comparison_scene("", true, scale.width, scale.height);
+  result.scene.camera.look_at = {395, 70, 130};
+  result.scene.camera.fov_degrees = close_up_fov;
+  result.scene.name += "-close-up";
+  result.key = render::scene_fingerprint(result.scene);
+  return result;
+}
+
+/// A time-assignment comparison over seeds and the pixels where time matters.
+struct TimeAssignments {
+  RepeatedComparison comparison;
+  std::vector<bool> moving;  ///< per pixel: its value depends on the assignment
+  std::size_t pixels = 0, moving_count = 0;
+  std::vector<std::vector<double>> region_mse;  ///< [configuration][seed], over `moving`
+  std::vector<RowStatistics> whole, local;
+};
+
+TimeAssignments measure_time_assignments(const render::ComparisonScene& scene,
+                                         const std::vector<render::CompareConfig>& configs,
+                                         const render::CompareOptions& options, unsigned repeats) {
+  TimeAssignments result;
+  result.comparison = run_repeated_comparison(scene, configs, options, repeats);
+  const RepeatedComparison& comparison = result.comparison;
+  // The pixels whose value depends on the time assignment: where the renders
+  // of a seed differ (the assignments change only the samples' times, so
+  // elsewhere the images agree and the error is common to all), in any seed.
+  result.pixels = std::size_t(comparison.reference.width) * std::size_t(comparison.reference.height);
+  result.moving.assign(result.pixels, false);
+  for (const auto& images : comparison.images)
+    for (std::size_t p = 0; p < result.pixels; ++p)
+      for (std::size_t i = 1; i < images.size() && !result.moving[p]; ++i)
+        for (int c = 0; c < 3; ++c)
+          result.moving[p] = result.moving[p] || images[i].rgb[3 * p + c] != images[0].rgb[3 * p + c];
+  result.moving_count = std::size_t(std::count(result.moving.begin(), result.moving.end(), true));
+  result.region_mse.resize(configs.size());
+  for (const auto& images : comparison.images)
+    for (std::size_t i = 0; i < images.size(); ++i)
+      result.region_mse[i].push_back(masked_mean_squared_error(images[i], comparison.reference, result.moving));
+  result.whole = row_statistics(comparison, comparison.mse);
+  result.local = row_statistics(comparison, result.region_mse);
+  return result;
+}
+
+/// The reference, the first seed's renders and the mask of time-dependent pixels.
+nlohmann::json time_assignment_panels(const TimeAssignments& run, const std::vector<render::CompareConfig>& configs) {
+  const RepeatedComparison& comparison = run.comparison;
+  nlohmann::json panels = nlohmann::json::array();
+  panels.push_back(image_panel(comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)));
+  for (std::size_t i = 0; i < configs.size(); ++i)
+    panels.push_back(image_panel(comparison.images[0][i],
+                                 fmt::format("{}\nMSE {}", configs[i].label, format_number(comparison.mse[i][0]))));
+  nlohmann::json mask = image_panel(comparison.reference, "pixels that depend on time");
+  for (std::size_t p = 0; p < run.pixels; ++p)
+    for (int c = 0; c < 3; ++c) mask["rgb"][3 * p + c] = run.moving[p] ? 1.0 : 0.0;
+  panels.push_back(mask);
+  return panels;
+}
+
+nlohmann::json time_assignment_numbers(const TimeAssignments& run, const std::vector<render::CompareConfig>& configs) {
+  const RepeatedComparison& comparison = run.comparison;
+  nlohmann::json numbers = repeated_numbers(comparison, run.whole);
+  numbers["time_dependent_pixels"] = run.moving_count;
+  numbers["pixels"] = run.pixels;
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    auto& row = numbers["rows"][configs[i].label];
+    row["time_dependent_mse_per_seed"] = run.region_mse[i];
+    row["time_dependent_mse_mean"] = run.local[i].mse.mean;
+    row["time_dependent_mse_standard_error"] = run.local[i].mse.standard_error;
+    row["time_dependent_mse_ratio"] = interval_json(run.local[i].mse_ratio);
+    // The first seed's per-sample variance: the unbiasedness check of the tests.
+    row["sample_variance"] = mean_sample_variance(comparison.images[0][i]);
+  }
+  double sum = 0;
+  for (const double v : comparison.reference.variance) sum += v;
+  numbers["reference_variance"] = comparison.reference.variance.empty() ? 0.0 : sum / double(comparison.reference.variance.size());
+  return numbers;
+}
+
 }  // namespace
 
 Section space_time_section(SectionContext& context) {
@@ -182,78 +267,56 @@ Section space_time_section(SectionContext& context) {
   section.tables.push_back(std::move(sums_table));
 
   // Motion blur with each assignment, over several seeds (paired: every
-  // assignment of a repeat shares the film, lens and light samples).
+  // assignment of a repeat shares the film, lens and light samples): the
+  // whole Cornell box, and a close-up where the sphere fills the frame.
   const RenderScale scale = render_scale(context);
-  const auto scene = render::comparison_scene("", true, scale.width, scale.height);
   const auto configs = render::builtin_comparison("time-pattern", context.threads(), context.seed());
   render::CompareOptions options;
   options.reference_spp = scale.reference_spp;
   options.cache_dir = context.cache_dir();
   const unsigned repeats = context.quick() ? 4 : 8;
-  const RepeatedComparison comparison = run_repeated_comparison(scene, configs, options, repeats);
-  // The pixels whose value depends on the time assignment: where the renders
-  // of a repeat differ (the assignments change only the samples' times, so
-  // elsewhere the images agree and the error is common to all), in any repeat.
-  const std::size_t pixels = std::size_t(scale.width) * scale.height;
-  std::vector<bool> moving(pixels, false);
-  for (const auto& images : comparison.images)
-    for (std::size_t p = 0; p < pixels; ++p)
-      for (std::size_t i = 1; i < images.size() && !moving[p]; ++i)
-        for (int c = 0; c < 3; ++c) moving[p] = moving[p] || images[i].rgb[3 * p + c] != images[0].rgb[3 * p + c];
-  const std::size_t moving_count = std::size_t(std::count(moving.begin(), moving.end(), true));
-  std::vector<std::vector<double>> region_mse(configs.size());
-  for (const auto& images : comparison.images)
-    for (std::size_t i = 0; i < images.size(); ++i)
-      region_mse[i].push_back(masked_mean_squared_error(images[i], comparison.reference, moving));
-  const std::vector<RowStatistics> whole = row_statistics(comparison, comparison.mse);
-  const std::vector<RowStatistics> local = row_statistics(comparison, region_mse);
+  const TimeAssignments box =
+      measure_time_assignments(render::comparison_scene("", true, scale.width, scale.height), configs, options, repeats);
+  const TimeAssignments close = measure_time_assignments(close_up(scale), configs, options, repeats);
+  const auto& comparison = box.comparison;
+  const auto& whole = box.whole;
+  const auto& local = box.local;
+  const std::size_t pixels = box.pixels, moving_count = box.moving_count;
 
-  nlohmann::json render_panels = nlohmann::json::array();
-  render_panels.push_back(image_panel(comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)));
-  for (std::size_t i = 0; i < configs.size(); ++i)
-    render_panels.push_back(image_panel(comparison.images[0][i],
-                                 fmt::format("{}\nMSE {}", configs[i].label, format_number(comparison.mse[i][0]))));
-  nlohmann::json mask_image = image_panel(comparison.reference, "pixels that depend on time");
-  for (std::size_t p = 0; p < pixels; ++p)
-    for (int c = 0; c < 3; ++c) mask_image["rgb"][3 * p + c] = moving[p] ? 1.0 : 0.0;
-  render_panels.push_back(mask_image);
   section.figures.push_back(image_figure(
-      context, render_panels, "motion-blur",
+      context, time_assignment_panels(box, configs), "motion-blur",
       fmt::format("The Cornell box with a moving sphere, {}×{} pixels, {} samples per pixel: the reference, then time "
                   "assigned to the 4×4 strata at random, by Cook's pattern and by the magic square (first seed), and "
                   "in white the {} pixels whose value depends on the time assignment",
                   scale.width, scale.height, configs.front().settings.sampler.spp, moving_count)));
+  section.figures.push_back(image_figure(
+      context, time_assignment_panels(close, configs), "motion-close-up",
+      fmt::format("A close-up of the moving sphere (a {}° field of view), where {} of the {} pixels depend on the time "
+                  "assignment (white in the last panel)",
+                  format_number(close_up_fov), close.moving_count, close.pixels)));
   const std::string method = interval_method(repeats);
   section.tables.push_back(repeated_table(
       comparison, whole,
       fmt::format("Motion blur against a {}-spp reference, whole image ({})", comparison.reference_spp, method)));
-  Table region{fmt::format("MSE over the {} of {} pixels whose value depends on the time assignment ({} seeds, 95% "
-                           "t intervals on log ratios)",
-                           moving_count, pixels, repeats),
-               {"time assignment", "MSE on those pixels (mean ± s.e.)", "ratio random/this (95% CI)"},
+  Table region{fmt::format("MSE over the pixels whose value depends on the time assignment: {} of {} in the box, {} "
+                           "of {} in the close-up ({} seeds, 95% t intervals on log ratios)",
+                           moving_count, pixels, close.moving_count, close.pixels, repeats),
+               {"time assignment", "box: MSE on those pixels (mean ± s.e.)", "box: ratio random/this (95% CI)",
+                "close-up: MSE on those pixels", "close-up: ratio random/this (95% CI)",
+                "close-up: whole-image ratio (95% CI)"},
                {}};
   for (std::size_t i = 0; i < configs.size(); ++i)
     region.rows.push_back({configs[i].label,
                            format_number(local[i].mse.mean) + " ± " + format_number(local[i].mse.standard_error, 2),
-                           i == 0 ? "1 (baseline)" : format_interval(local[i].mse_ratio)});
+                           i == 0 ? "1 (baseline)" : format_interval(local[i].mse_ratio),
+                           format_number(close.local[i].mse.mean) + " ± " +
+                               format_number(close.local[i].mse.standard_error, 2),
+                           i == 0 ? "1 (baseline)" : format_interval(close.local[i].mse_ratio),
+                           i == 0 ? "1 (baseline)" : format_interval(close.whole[i].mse_ratio)});
   section.tables.push_back(std::move(region));
-  section.numbers["motion_blur"] = repeated_numbers(comparison, whole);
-  section.numbers["motion_blur"]["time_dependent_pixels"] = moving_count;
-  section.numbers["motion_blur"]["pixels"] = pixels;
-  for (std::size_t i = 0; i < configs.size(); ++i) {
-    auto& row = section.numbers["motion_blur"]["rows"][configs[i].label];
-    row["time_dependent_mse_per_seed"] = region_mse[i];
-    row["time_dependent_mse_mean"] = local[i].mse.mean;
-    row["time_dependent_mse_standard_error"] = local[i].mse.standard_error;
-    row["time_dependent_mse_ratio"] = interval_json(local[i].mse_ratio);
-    // Seed 0's per-sample variance: the unbiasedness check of the tests.
-    row["sample_variance"] = mean_sample_variance(comparison.images[0][i]);
-  }
-  section.numbers["motion_blur"]["reference_variance"] = [&] {
-    double sum = 0;
-    for (const double v : comparison.reference.variance) sum += v;
-    return comparison.reference.variance.empty() ? 0.0 : sum / double(comparison.reference.variance.size());
-  }();
+  section.numbers["motion_blur"] = time_assignment_numbers(box, configs);
+  section.numbers["motion_close_up"] = time_assignment_numbers(close, configs);
+  section.numbers["motion_close_up"]["fov_degrees"] = close_up_fov;
 
   const auto& cook = section.numbers["tables"]["Cook pattern"];
   section.text.push_back(fmt::format(
@@ -274,10 +337,18 @@ Section space_time_section(SectionContext& context) {
     timing += (i == 1 ? "" : "; ") + fmt::format("{} {}", configs[i].label, efficiency_text(whole[i]));
   section.text.push_back(fmt::format(
       "Rendered with {} samples per pixel against a {}-spp reference over {} seeds, the whole-image MSE of random "
-      "time is {} ± {}, and the ratio random/this is {}: only {} of the {} pixels depend on the time "
-      "assignment, so the rest of the image dilutes the effect. Over those {} pixels alone the ratio is {}.",
+      "time is {} ± {}, and the ratio random/this is {}; {} of the {} pixels depend on the time assignment, and "
+      "over those alone the ratio is {}.",
       configs.front().settings.sampler.spp, comparison.reference_spp, repeats, format_number(whole[0].mse.mean),
-      format_number(whole[0].mse.standard_error, 2), whole_text, moving_count, pixels, moving_count, local_text));
+      format_number(whole[0].mse.standard_error, 2), whole_text, moving_count, pixels, local_text));
+  std::string close_text;
+  for (std::size_t i = 1; i < configs.size(); ++i)
+    close_text += (i == 1 ? "" : " and ") +
+                  fmt::format("{} for {}", format_interval(close.local[i].mse_ratio), configs[i].label);
+  section.text.push_back(fmt::format(
+      "In a close-up where the moving sphere fills the frame, {} of the {} pixels depend on time, and the ratio "
+      "random/this over them is {}.",
+      close.moving_count, close.pixels, close_text));
   section.text.push_back(fmt::format(
       "Every assignment traces the same rays, so the efficiency ratio should equal the MSE ratio; it is quoted only "
       "where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",

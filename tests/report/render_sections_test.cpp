@@ -205,6 +205,15 @@ TEST(ReportRenderSections, SpaceTimeTablesAndMotionBlur) {
                               rows["random time"]["time_dependent_mse_per_seed"][k].get<double>()) * pixels;
     EXPECT_NEAR(whole_gap, local_gap, 1e-9) << k;
   }
+  // The close-up: the sphere fills the frame, so a far larger share of its
+  // pixels depends on time than of the whole box's.
+  const auto& close = section.numbers["motion_close_up"];
+  EXPECT_EQ(close["pixels"], 32 * 32);
+  EXPECT_GT(close["time_dependent_pixels"].get<double>(), 3.0 * pixels);
+  for (const auto& [label, row] : close["rows"].items()) {
+    expect_repeated_row(row, repeats, label);
+    expect_unbiased_first_seed(close, label, true);
+  }
 }
 
 TEST(ReportRenderSections, PathTracingAtEqualRaysAndAtEqualTime) {
