@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include "sections.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"

@@ -53,10 +53,11 @@ Section path_tracing_section(SectionContext& context) {
   section.figures.push_back(image_figure(
       context, panels, "complete-incomplete",
       fmt::format("Path tracing (up to {} bounces), {}×{} pixels, first seed: the reference; {} eye rays × {} shadow "
-                  "rays and {} eye rays × {} shadow ray per pixel (equal rays); then both at equal time, {} each",
+                  "rays and {} eye rays × {} shadow ray per pixel (equal rays); in the second row both at equal "
+                  "time, {} each",
                   configs.at(0).settings.max_depth, scale.width, scale.height, complete_spp, complete_shadow,
                   incomplete_spp, incomplete_shadow, format_seconds(timed_options.equal_time)),
-      5));
+      3));
   const std::string method = interval_method(repeats);
   section.tables.push_back(repeated_table(
       rays, ray_stats,

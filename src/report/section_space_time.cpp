@@ -350,8 +350,8 @@ Section space_time_section(SectionContext& context) {
       "random/this over them is {}.",
       close.moving_count, close.pixels, close_text));
   section.text.push_back(fmt::format(
-      "Every assignment traces the same rays, so the efficiency ratio should equal the MSE ratio; it is quoted only "
-      "where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",
+      "Every assignment traces the same number of rays, so the efficiency ratio should equal the MSE ratio; it is "
+      "quoted only where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",
       timing, method));
   screen_space_error(context, section);
   section.try_it = {"stratum compare --builtin time-pattern --width 64 --height 64",
