@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -111,6 +112,20 @@ TEST(ReportSamplingSections, StratificationSlopesAndRandomVariances) {
       EXPECT_GT((runs - 1) * row[key].get<double>(), low_p) << key << " N = " << row["n"];
       EXPECT_LT((runs - 1) * row[key].get<double>(), high_p) << key << " N = " << row["n"];
     }
+  }
+  // The random/jittered variance ratio at the largest N: its 95% F interval
+  // holds the estimate, and the true ratio (p(1 − p)/N over the exact
+  // jittered variance) lies in the 99.9% F interval (α = 1e-3).
+  const auto& ratio = numbers.at("edge_variance_ratio_random_over_jittered");
+  EXPECT_LT(ratio["low"].get<double>(), ratio["estimate"].get<double>());
+  EXPECT_GT(ratio["high"].get<double>(), ratio["estimate"].get<double>());
+  {
+    const double largest = numbers["counts"].back().get<double>();
+    const double truth = p * (1 - p) / largest / prediction.back()["edge"].get<double>();
+    const boost::math::fisher_f f(runs - 1.0, runs - 1.0);
+    const double estimate = ratio["estimate"].get<double>();
+    EXPECT_GT(truth, estimate / boost::math::quantile(boost::math::complement(f, 5e-4)));
+    EXPECT_LT(truth, estimate / boost::math::quantile(f, 5e-4));
   }
   // The sentence quotes the measured jittered slope.
   EXPECT_NE(run.section.text[0].find(format_number(slope("edge", "jittered:none"))), std::string::npos);
