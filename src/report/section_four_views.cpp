@@ -296,7 +296,8 @@ Section four_views_section(SectionContext& context) {
   section.text.push_back(fmt::format(
       "Zaremba's points (here moved by a random Cranley–Patterson shift, which leaves the spectrum unchanged) rank "
       "{} of {} by star discrepancy and {} by the height of their radial power peak ({}; Poisson-disk {}, random "
-      "{}); Poisson-disk points rank {} by low-frequency power and {} by star discrepancy.",
+      "{}); the plain (not periodic) Poisson-disk points rank {} by low-frequency power and {} by star "
+      "discrepancy.",
       rank_of("zaremba:cp", "star"), samplers.size(), rank_of("zaremba:cp", "peak_power"),
       value_of("zaremba:cp", "peak_power"), value_of("poisson-disk", "peak_power"), value_of("random", "peak_power"),
       rank_of("poisson-disk", "low_frequency_power"), rank_of("poisson-disk", "star")));
