@@ -83,6 +83,7 @@ path = numbers["sections"]["path-tracing"]["numbers"]
 check_repeated(path["equal_rays"], "equal_rays")
 check_repeated(path["equal_time"], "equal_time")
 assert path["equal_time"]["equal_time_seconds"] > 0 and path["equal_time_winner"] in ("complete", "incomplete", "neither")
+assert path["equal_time_decided_by"] in ("efficiency_ratio", "mse_ratio")
 # §4: the exact jittered variance on both edges; §13: the product rules and the periodic Poisson disk.
 stratification = numbers["sections"]["stratification"]["numbers"]
 assert len(stratification["jittered_prediction"]) == len(stratification["counts"])
