@@ -337,8 +337,8 @@ Section four_views_section(SectionContext& context) {
   section.text.push_back(fmt::format(
       "The quadrature view's own rules at the same {} points: product Gauss–Legendre integrates the smooth Gaussian "
       "to {} and the midpoint rule to {} (better than {} of the {} patterns' RMSE; the best pattern, {}, reaches {}). "
-      "On the quarter disk, whose edge no product rule resolves, both fall to a low order: Gauss–Legendre's error is "
-      "{} ({} of the patterns do better) and the midpoint rule's {} ({} do better).",
+      "On the quarter disk, whose curved edge no product rule follows, Gauss–Legendre's error is {} ({} of the "
+      "patterns do better) and the midpoint rule's {} ({} do better).",
       settings.n, rule_error(gaussian_rules.gauss), rule_error(gaussian_rules.midpoint), beaten_by_midpoint,
       samplers.size(), sampler_name(samplers[by_smooth.front()]), format_number(views[by_smooth.front()].smooth_rmse),
       rule_error(disk_rules.gauss), beating(disk_rules.gauss), rule_error(disk_rules.midpoint),

@@ -262,17 +262,23 @@ Section stratification_section(SectionContext& context) {
       "This edge is parallel to an axis, and the (0,2)-sequences stratify x into N intervals: Owen-scrambled "
       "Sobol' reaches {} and PMJ02 {} on it.",
       slope_text(sobol_edge), slope_text(pmj_edge)));
+  // "falls to" when the slanted edge's fitted slope is shallower than the axis-aligned one's.
+  const auto change = [&](const std::string& name) {
+    return entry_of(slanted, name).slope.slope > entry_of(edge, name).slope.slope ? "falls to" : "goes to";
+  };
   const double slanted_degrees =
       std::fmod(std::atan2(-slanted_plane.normal[0], slanted_plane.normal[1]) * 180 / std::numbers::pi + 180, 180);
   section.text.push_back(fmt::format(
       "Slanted at {}° to the x axis, the edge is no longer stratified by the (0,2)-sequences' N intervals in x: "
-      "Owen-scrambled Sobol' falls to {} and PMJ02 to {}, jittered {} and random {}. Jittered's variance is known "
+      "Owen-scrambled Sobol' {} {} and PMJ02 {} {}, jittered {} and random {}. Jittered's variance is known "
       "exactly: with one uniform point in each of the N cells, the point of cell i falls below the edge with "
       "probability a_i (the part of the cell below it), so Var = Σ a_i(1 − a_i)/N², which only cut cells feed "
       "— about √N of them, each at most 1/4, hence N^-1.5. Measured over exact it is {} on the axis-aligned edge "
       "and {} on the slanted one (from N = {} to {}; a variance from {} runs of normal estimates has a relative "
-      "standard error of about {}%); the wobble of the axis-aligned curve is exact too: its cut column covers frac(√N/π) of each cell.",
-      format_number(slanted_degrees), slope_text(entry_of(slanted, "sobol")), slope_text(entry_of(slanted, "pmj02")),
+      "standard error of about {}%); the wobble of the axis-aligned curve is exact too: its cut column covers "
+      "frac(√N/π) of each cell.",
+      format_number(slanted_degrees), change("sobol"), slope_text(entry_of(slanted, "sobol")), change("pmj02"),
+      slope_text(entry_of(slanted, "pmj02")),
       slope_text(jittered_slanted), slope_text(entry_of(slanted, "random")),
       [&] {
         double low = 1e300, high = 0;
