@@ -388,8 +388,8 @@ Section four_views_section(SectionContext& context) {
       rank_of(periodic, "edge_variance"), rank_of(periodic, "star"), rank_of(periodic, "smooth_rmse"),
       nets_ahead ? "So the ranking departs from the lecture outside the spectrum: the scrambled (0,2)-sequences, "
                    "later than the lecture's sources, stratify every elementary interval at once and beat both "
-                   "recommended patterns in every non-spectral measure, while the recommendation stands for what a "
-                   "viewer sees of aliasing."
+                   "recommended patterns in every non-spectral measure; the case for the recommended patterns rests on "
+                   "the spectrum."
                  : "The scrambled (0,2)-sequences do not beat both recommended patterns in every non-spectral measure "
                    "here, so the lecture's recommendation holds up beyond the spectrum."));
   if (!skipped.empty()) {
