@@ -13,6 +13,7 @@
 #include <cstdlib>
 
 #include "render_support.hpp"
+#include "repeated_comparison.hpp"
 #include "sections.hpp"
 #include "stratum/spacetime/cook_pattern.hpp"
 #include "stratum/spacetime/magic_square.hpp"
@@ -141,6 +142,91 @@ void screen_space_error(SectionContext& context, Section& section) {
       format_number(rows[1].mse), format_number(rows[2].low_frequency_power), format_number(rows[3].low_frequency_power)));
 }
 
+/// The field of view of the close-up of the moving sphere.
+constexpr double close_up_fov = 14;
+
+/// The Cornell box seen through a narrow lens aimed at the moving sphere
+/// (centre x 420 → 370 mm while the shutter is open, radius 70), so that the
+/// sphere, its motion and its shadow fill the frame.
+render::ComparisonScene close_up(const RenderScale& scale) {
+  render::ComparisonScene result = render::comparison_scene("", true, scale.width, scale.height);
+  result.scene.camera.look_at = {395, 70, 130};
+  result.scene.camera.fov_degrees = close_up_fov;
+  result.scene.name += "-close-up";
+  result.key = render::scene_fingerprint(result.scene);
+  return result;
+}
+
+/// A time-assignment comparison over seeds and the pixels where time matters.
+struct TimeAssignments {
+  RepeatedComparison comparison;
+  std::vector<bool> moving;  ///< per pixel: its value depends on the assignment
+  std::size_t pixels = 0, moving_count = 0;
+  std::vector<std::vector<double>> region_mse;  ///< [configuration][seed], over `moving`
+  std::vector<RowStatistics> whole, local;
+};
+
+TimeAssignments measure_time_assignments(const render::ComparisonScene& scene,
+                                         const std::vector<render::CompareConfig>& configs,
+                                         const render::CompareOptions& options, unsigned repeats) {
+  TimeAssignments result;
+  result.comparison = run_repeated_comparison(scene, configs, options, repeats);
+  const RepeatedComparison& comparison = result.comparison;
+  // The pixels whose value depends on the time assignment: where the renders
+  // of a seed differ (the assignments change only the samples' times, so
+  // elsewhere the images agree and the error is common to all), in any seed.
+  result.pixels = std::size_t(comparison.reference.width) * std::size_t(comparison.reference.height);
+  result.moving.assign(result.pixels, false);
+  for (const auto& images : comparison.images)
+    for (std::size_t p = 0; p < result.pixels; ++p)
+      for (std::size_t i = 1; i < images.size() && !result.moving[p]; ++i)
+        for (int c = 0; c < 3; ++c)
+          result.moving[p] = result.moving[p] || images[i].rgb[3 * p + c] != images[0].rgb[3 * p + c];
+  result.moving_count = std::size_t(std::count(result.moving.begin(), result.moving.end(), true));
+  result.region_mse.resize(configs.size());
+  for (const auto& images : comparison.images)
+    for (std::size_t i = 0; i < images.size(); ++i)
+      result.region_mse[i].push_back(masked_mean_squared_error(images[i], comparison.reference, result.moving));
+  result.whole = row_statistics(comparison, comparison.mse);
+  result.local = row_statistics(comparison, result.region_mse);
+  return result;
+}
+
+/// The reference, the first seed's renders and the mask of time-dependent pixels.
+nlohmann::json time_assignment_panels(const TimeAssignments& run, const std::vector<render::CompareConfig>& configs) {
+  const RepeatedComparison& comparison = run.comparison;
+  nlohmann::json panels = nlohmann::json::array();
+  panels.push_back(image_panel(comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)));
+  for (std::size_t i = 0; i < configs.size(); ++i)
+    panels.push_back(image_panel(comparison.images[0][i],
+                                 fmt::format("{}\nMSE {}", configs[i].label, format_number(comparison.mse[i][0]))));
+  nlohmann::json mask = image_panel(comparison.reference, "pixels that depend on time");
+  for (std::size_t p = 0; p < run.pixels; ++p)
+    for (int c = 0; c < 3; ++c) mask["rgb"][3 * p + c] = run.moving[p] ? 1.0 : 0.0;
+  panels.push_back(mask);
+  return panels;
+}
+
+nlohmann::json time_assignment_numbers(const TimeAssignments& run, const std::vector<render::CompareConfig>& configs) {
+  const RepeatedComparison& comparison = run.comparison;
+  nlohmann::json numbers = repeated_numbers(comparison, run.whole);
+  numbers["time_dependent_pixels"] = run.moving_count;
+  numbers["pixels"] = run.pixels;
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    auto& row = numbers["rows"][configs[i].label];
+    row["time_dependent_mse_per_seed"] = run.region_mse[i];
+    row["time_dependent_mse_mean"] = run.local[i].mse.mean;
+    row["time_dependent_mse_standard_error"] = run.local[i].mse.standard_error;
+    row["time_dependent_mse_ratio"] = interval_json(run.local[i].mse_ratio);
+    // The first seed's per-sample variance: the unbiasedness check of the tests.
+    row["sample_variance"] = mean_sample_variance(comparison.images[0][i]);
+  }
+  double sum = 0;
+  for (const double v : comparison.reference.variance) sum += v;
+  numbers["reference_variance"] = comparison.reference.variance.empty() ? 0.0 : sum / double(comparison.reference.variance.size());
+  return numbers;
+}
+
 }  // namespace
 
 Section space_time_section(SectionContext& context) {
@@ -180,43 +266,57 @@ Section space_time_section(SectionContext& context) {
       "column sums outside the grid"));
   section.tables.push_back(std::move(sums_table));
 
-  // Motion blur with each assignment.
+  // Motion blur with each assignment, over several seeds (paired: every
+  // assignment of a repeat shares the film, lens and light samples): the
+  // whole Cornell box, and a close-up where the sphere fills the frame.
   const RenderScale scale = render_scale(context);
-  const auto scene = render::comparison_scene("", true, scale.width, scale.height);
   const auto configs = render::builtin_comparison("time-pattern", context.threads(), context.seed());
-  const RenderedComparison comparison = run_comparison(scene, configs, scale.reference_spp, context.cache_dir());
-  // The pixels whose value depends on the time assignment: where the renders
-  // differ (the same film, lens and light samples go to every configuration,
-  // so elsewhere the images agree and the error is common to all).
-  const std::size_t pixels = std::size_t(scale.width) * scale.height;
-  std::vector<bool> moving(pixels, false);
-  std::size_t moving_count = 0;
-  for (std::size_t p = 0; p < pixels; ++p) {
-    for (std::size_t i = 1; i < comparison.images.size() && !moving[p]; ++i)
-      for (int c = 0; c < 3; ++c) moving[p] = moving[p] || comparison.images[i].rgb[3 * p + c] != comparison.images[0].rgb[3 * p + c];
-    moving_count += moving[p];
-  }
+  render::CompareOptions options;
+  options.reference_spp = scale.reference_spp;
+  options.cache_dir = context.cache_dir();
+  const unsigned repeats = context.quick() ? 4 : 8;
+  const TimeAssignments box =
+      measure_time_assignments(render::comparison_scene("", true, scale.width, scale.height), configs, options, repeats);
+  const TimeAssignments close = measure_time_assignments(close_up(scale), configs, options, repeats);
+  const auto& comparison = box.comparison;
+  const auto& whole = box.whole;
+  const auto& local = box.local;
+  const std::size_t pixels = box.pixels, moving_count = box.moving_count;
+
   section.figures.push_back(image_figure(
-      context, comparison_panels(comparison), "motion-blur",
+      context, time_assignment_panels(box, configs), "motion-blur",
       fmt::format("The Cornell box with a moving sphere, {}×{} pixels, {} samples per pixel: the reference, then time "
-                  "assigned to the 4×4 strata at random, by Cook's pattern and by the magic square",
-                  scale.width, scale.height, comparison.rows.front().samples)));
-  section.tables.push_back(comparison_table(
-      comparison, fmt::format("Motion blur against a {}-spp reference (whole image)", comparison.reference_spp)));
-  Table region{fmt::format("MSE over the {} pixels whose value depends on the time assignment", moving_count),
-               {"time assignment", "MSE (those pixels)", "ratio (random / this)"},
+                  "assigned to the 4×4 strata at random, by Cook's pattern and by the magic square (first seed), and "
+                  "in white the {} pixels whose value depends on the time assignment",
+                  scale.width, scale.height, configs.front().settings.sampler.spp, moving_count)));
+  section.figures.push_back(image_figure(
+      context, time_assignment_panels(close, configs), "motion-close-up",
+      fmt::format("A close-up of the moving sphere (a {}° field of view), where {} of the {} pixels depend on the time "
+                  "assignment (white in the last panel)",
+                  format_number(close_up_fov), close.moving_count, close.pixels)));
+  const std::string method = interval_method(repeats);
+  section.tables.push_back(repeated_table(
+      comparison, whole,
+      fmt::format("Motion blur against a {}-spp reference, whole image ({})", comparison.reference_spp, method)));
+  Table region{fmt::format("MSE over the pixels whose value depends on the time assignment: {} of {} in the box, {} "
+                           "of {} in the close-up ({} seeds, 95% t intervals on log ratios)",
+                           moving_count, pixels, close.moving_count, close.pixels, repeats),
+               {"time assignment", "box: MSE on those pixels (mean ± s.e.)", "box: ratio random/this (95% CI)",
+                "close-up: MSE on those pixels", "close-up: ratio random/this (95% CI)",
+                "close-up: whole-image ratio (95% CI)"},
                {}};
-  section.numbers["motion_blur"] = comparison_numbers(comparison);
-  section.numbers["motion_blur"]["time_dependent_pixels"] = moving_count;
-  std::vector<double> region_mse;
-  for (std::size_t i = 0; i < comparison.rows.size(); ++i)
-    region_mse.push_back(masked_mean_squared_error(comparison.images[i], comparison.reference, moving));
-  for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
-    const double ratio = region_mse[i] > 0 ? region_mse[0] / region_mse[i] : 0;
-    region.rows.push_back({comparison.rows[i].label, format_number(region_mse[i]), format_number(ratio)});
-    section.numbers["motion_blur"]["rows"][comparison.rows[i].label]["time_dependent_mse"] = region_mse[i];
-  }
+  for (std::size_t i = 0; i < configs.size(); ++i)
+    region.rows.push_back({configs[i].label,
+                           format_number(local[i].mse.mean) + " ± " + format_number(local[i].mse.standard_error, 2),
+                           i == 0 ? "1 (baseline)" : format_interval(local[i].mse_ratio),
+                           format_number(close.local[i].mse.mean) + " ± " +
+                               format_number(close.local[i].mse.standard_error, 2),
+                           i == 0 ? "1 (baseline)" : format_interval(close.local[i].mse_ratio),
+                           i == 0 ? "1 (baseline)" : format_interval(close.whole[i].mse_ratio)});
   section.tables.push_back(std::move(region));
+  section.numbers["motion_blur"] = time_assignment_numbers(box, configs);
+  section.numbers["motion_close_up"] = time_assignment_numbers(close, configs);
+  section.numbers["motion_close_up"]["fov_degrees"] = close_up_fov;
 
   const auto& cook = section.numbers["tables"]["Cook pattern"];
   section.text.push_back(fmt::format(
@@ -226,16 +326,33 @@ Section space_time_section(SectionContext& context) {
       "at least {} slots apart.",
       target, magic_flags[1] ? "pan-diagonal magic" : "not magic", magic_flags[0] ? "also does" : "does not",
       join(cook["row_sums"].get<std::vector<std::uint64_t>>()), cook["neighbour_separation"].get<std::uint32_t>()));
-  std::string whole, local;
-  for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
-    const std::string separator = i == 0 ? "" : i + 1 == comparison.rows.size() ? " and " : ", ";
-    whole += separator + fmt::format("{} with {}", format_number(comparison.rows[i].mse), comparison.rows[i].label);
-    local += separator + fmt::format("{} with {}", format_number(region_mse[i]), comparison.rows[i].label);
+  std::string whole_text, local_text;
+  for (std::size_t i = 1; i < configs.size(); ++i) {
+    const std::string separator = i == 1 ? "" : " and ";
+    whole_text += separator + fmt::format("{} for {}", format_interval(whole[i].mse_ratio), configs[i].label);
+    local_text += separator + fmt::format("{} for {}", format_interval(local[i].mse_ratio), configs[i].label);
   }
+  std::string timing;
+  for (std::size_t i = 1; i < configs.size(); ++i)
+    timing += (i == 1 ? "" : "; ") + fmt::format("{} {}", configs[i].label, efficiency_text(whole[i]));
   section.text.push_back(fmt::format(
-      "Rendered with {} samples per pixel against a {}-spp reference, the whole-image MSE is {}; over the {} pixels "
-      "where the renders differ (elsewhere they agree, so their error there is common to all) it is {}.",
-      comparison.rows.front().samples, comparison.reference_spp, whole, moving_count, local));
+      "Rendered with {} samples per pixel against a {}-spp reference over {} seeds, the whole-image MSE of random "
+      "time is {} ± {}, and the ratio random/this is {}; {} of the {} pixels depend on the time assignment, and "
+      "over those alone the ratio is {}.",
+      configs.front().settings.sampler.spp, comparison.reference_spp, repeats, format_number(whole[0].mse.mean),
+      format_number(whole[0].mse.standard_error, 2), whole_text, moving_count, pixels, local_text));
+  std::string close_text;
+  for (std::size_t i = 1; i < configs.size(); ++i)
+    close_text += (i == 1 ? "" : " and ") +
+                  fmt::format("{} for {}", format_interval(close.local[i].mse_ratio), configs[i].label);
+  section.text.push_back(fmt::format(
+      "In a close-up where the moving sphere fills the frame, {} of the {} pixels depend on time, and the ratio "
+      "random/this over them is {}.",
+      close.moving_count, close.pixels, close_text));
+  section.text.push_back(fmt::format(
+      "Every assignment traces the same number of rays, so the efficiency ratio should equal the MSE ratio; it is "
+      "quoted only where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",
+      timing, method));
   screen_space_error(context, section);
   section.try_it = {"stratum compare --builtin time-pattern --width 64 --height 64",
                     "stratum render scenes/penumbra.json --sampler zsobol --spp 1 --exr z.exr && stratum render "

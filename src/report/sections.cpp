@@ -14,7 +14,7 @@ const std::vector<SectionInfo>& report_sections() {
       {"dimension", "§6", "High dimensions: quadrature against Monte Carlo", dimension_section},
       {"block-designs", "§7", "Block designs: Latin squares, N-rooks, N-queens, multi-jittered", block_designs_section},
       {"space-time", "§8", "Space-time patterns: Cook's pattern, magic squares and motion blur", space_time_section},
-      {"path-tracing", "§9", "Path tracing: complete versus incomplete at equal cost", path_tracing_section},
+      {"path-tracing", "§9", "Path tracing: complete versus incomplete at equal ray count and at equal time", path_tracing_section},
       {"discrepancy", "§10", "Discrepancy: the local discrepancy, star and L2 values, Koksma–Hlawka", discrepancy_section},
       {"edge-discrepancy", "§10", "Edge discrepancy: antialiasing an edge with 1, 2, 4 or 8 samples on an 8×8 grid",
        edge_discrepancy_section},

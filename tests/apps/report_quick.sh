@@ -65,6 +65,33 @@ page_text = (out / "index.html").read_text()
 assert 'id="edge-discrepancy"' in page_text
 for p in edge["grid_patterns"]:
     assert p["name"].replace("×", "×") in page_text, p["name"]
+# Honest statistics: ratios over seeds with intervals that hold their estimates, an efficiency
+# ratio only where the times differ beyond their noise, §9 at equal rays and at equal time.
+def check_repeated(comparison, where):
+    assert comparison["repeats"] >= 3 and "Student-t" in comparison["interval_method"], where
+    for label, row in comparison["rows"].items():
+        assert len(row["mse_per_seed"]) == len(row["seconds_per_seed"]) == comparison["repeats"], (where, label)
+        for key in ("mse_ratio", "time_ratio"):
+            assert row[key]["low"] <= row[key]["estimate"] <= row[key]["high"], (where, label, key)
+        resolved = row["time_ratio"]["low"] > 1 or row["time_ratio"]["high"] < 1
+        assert row["time_resolved"] == resolved and (row["efficiency_ratio"] is None) == (not resolved), (where, label)
+space_time = numbers["sections"]["space-time"]["numbers"]
+for key in ("motion_blur", "motion_close_up"):
+    check_repeated(space_time[key], key)
+    assert 0 < space_time[key]["time_dependent_pixels"] <= space_time[key]["pixels"], key
+path = numbers["sections"]["path-tracing"]["numbers"]
+check_repeated(path["equal_rays"], "equal_rays")
+check_repeated(path["equal_time"], "equal_time")
+assert path["equal_time"]["equal_time_seconds"] > 0 and path["equal_time_winner"] in ("complete", "incomplete", "neither")
+assert path["equal_time_decided_by"] in ("efficiency_ratio", "mse_ratio")
+# §4: the exact jittered variance on both edges; §13: the product rules and the periodic Poisson disk.
+stratification = numbers["sections"]["stratification"]["numbers"]
+assert len(stratification["jittered_prediction"]) == len(stratification["counts"])
+assert all(r["edge"] > 0 and r["slanted_edge"] > 0 for r in stratification["jittered_prediction"])
+assert "jittered:none" in stratification["slanted_edge"]["samplers"]
+views = numbers["sections"]["four-views"]["numbers"]
+assert views["quadrature"]["gauss_legendre"]["gaussian_error"] < views["quadrature"]["midpoint"]["gaussian_error"]
+assert "poisson-disk(periodic=1)" in views["patterns"]
 print(f"{len(ids)} sections, {sum(map(len, page.images.values()))} figures")
 PY
 [ -z "$(ls -A "$out" | grep partial)" ] && ok || fail "no staging folder left behind"

@@ -59,6 +59,39 @@ void expect_unbiased_mse(const nlohmann::json& comparison, const std::string& la
   EXPECT_NEAR(row["efficiency"].get<double>() * mse * row["seconds"].get<double>(), 1.0, 1e-9) << label;
 }
 
+/// expect_unbiased_mse for the first seed of a repeated comparison
+/// (repeated_comparison.hpp), whose rows hold per-seed lists.
+void expect_unbiased_first_seed(const nlohmann::json& comparison, const std::string& label, bool stratified = false) {
+  const auto& row = comparison["rows"][label];
+  const double image_variance = row["sample_variance"].get<double>() / row["spp_per_seed"][0].get<double>();
+  const double mse = row["mse_per_seed"][0].get<double>();
+  if (!stratified) {
+    EXPECT_GT(mse, 0.5 * image_variance) << label;
+  }
+  EXPECT_LT(mse, 2 * (image_variance + comparison["reference_variance"].get<double>())) << label;
+}
+
+/// A row of a repeated comparison: one MSE and time per seed, their
+/// summaries, intervals that hold their estimates, and an efficiency ratio
+/// only where the time ratio's interval excludes 1.
+void expect_repeated_row(const nlohmann::json& row, unsigned repeats, const std::string& label) {
+  ASSERT_EQ(row["mse_per_seed"].size(), repeats) << label;
+  ASSERT_EQ(row["seconds_per_seed"].size(), repeats) << label;
+  double sum = 0;
+  for (const auto& v : row["mse_per_seed"]) sum += v.get<double>();
+  EXPECT_NEAR(row["mse_mean"].get<double>(), sum / repeats, 1e-12 * sum) << label;
+  for (const char* key : {"mse_ratio", "time_ratio", "efficiency_ratio_unresolved"}) {
+    const auto& interval = row[key];
+    EXPECT_EQ(interval["count"], repeats) << label << " " << key;
+    EXPECT_LE(interval["low"].get<double>(), interval["estimate"].get<double>()) << label << " " << key;
+    EXPECT_GE(interval["high"].get<double>(), interval["estimate"].get<double>()) << label << " " << key;
+  }
+  const auto& time = row["time_ratio"];
+  const bool resolved = time["low"].get<double>() > 1 || time["high"].get<double>() < 1;
+  EXPECT_EQ(row["time_resolved"].get<bool>(), resolved) << label;
+  EXPECT_EQ(row["efficiency_ratio"].is_null(), !resolved) << label;
+}
+
 TEST(ReportRenderSections, CameraDepthOfFieldAndMotionBlurEachOnTheirOwn) {
   const Section section = run_section("camera");
   const auto& n = section.numbers;
@@ -193,21 +226,77 @@ TEST(ReportRenderSections, SpaceTimeTablesAndMotionBlur) {
   const int pixels = blur["time_dependent_pixels"].get<int>();
   EXPECT_GT(pixels, 0);                // the sphere moves
   EXPECT_LT(pixels, 32 * 32);          // the walls do not
+  const unsigned repeats = blur["repeats"].get<unsigned>();
+  EXPECT_GE(repeats, 3u);
   for (const auto& [label, row] : blur["rows"].items()) {
-    EXPECT_EQ(row["spp"], 16) << label;
-    expect_unbiased_mse(blur, label, true);  // space-time patterns: jittered in x, y and t
+    EXPECT_EQ(row["spp_per_seed"][0], 16) << label;
+    expect_unbiased_first_seed(blur, label, true);  // space-time patterns: jittered in x, y and t
+    expect_repeated_row(row, repeats, label);
+    const auto& local = row["time_dependent_mse_ratio"];
+    EXPECT_LE(local["low"].get<double>(), local["estimate"].get<double>()) << label;
+    EXPECT_GE(local["high"].get<double>(), local["estimate"].get<double>()) << label;
+    // The time-dependent pixels hold less error than the whole image's sum.
+    for (unsigned k = 0; k < repeats; ++k)
+      EXPECT_LE(row["time_dependent_mse_per_seed"][k].get<double>() * pixels,
+                row["mse_per_seed"][k].get<double>() * 32 * 32 * (1 + 1e-12)) << label;
+  }
+  // Elsewhere the renders agree: the whole-image sums of squared error differ
+  // only by the time-dependent pixels' (same film, lens and light samples).
+  const auto& rows = blur["rows"];
+  for (unsigned k = 0; k < repeats; ++k) {
+    const double whole_gap = (rows["cook"]["mse_per_seed"][k].get<double>() -
+                              rows["random time"]["mse_per_seed"][k].get<double>()) * 32 * 32;
+    const double local_gap = (rows["cook"]["time_dependent_mse_per_seed"][k].get<double>() -
+                              rows["random time"]["time_dependent_mse_per_seed"][k].get<double>()) * pixels;
+    EXPECT_NEAR(whole_gap, local_gap, 1e-9) << k;
+  }
+  // The close-up: the sphere fills the frame, so a far larger share of its
+  // pixels depends on time than of the whole box's.
+  const auto& close = section.numbers["motion_close_up"];
+  EXPECT_EQ(close["pixels"], 32 * 32);
+  EXPECT_GT(close["time_dependent_pixels"].get<double>(), 3.0 * pixels);
+  for (const auto& [label, row] : close["rows"].items()) {
+    expect_repeated_row(row, repeats, label);
+    expect_unbiased_first_seed(close, label, true);
   }
 }
 
-TEST(ReportRenderSections, PathTracingAtEqualShadowRays) {
+TEST(ReportRenderSections, PathTracingAtEqualRaysAndAtEqualTime) {
   const Section section = run_section("path-tracing");
   const auto& n = section.numbers;
   EXPECT_EQ(n["shadow_rays_per_pixel"]["complete 4x16"], 64);
   EXPECT_EQ(n["shadow_rays_per_pixel"]["incomplete 64x1"], 64);
-  EXPECT_EQ(n["rows"]["complete 4x16"]["spp"], 4);
-  EXPECT_EQ(n["rows"]["incomplete 64x1"]["spp"], 64);
-  expect_unbiased_mse(n, "complete 4x16");
-  expect_unbiased_mse(n, "incomplete 64x1");
+  const auto& rays = n["equal_rays"];
+  const unsigned repeats = rays["repeats"].get<unsigned>();
+  EXPECT_GE(repeats, 3u);
+  for (unsigned k = 0; k < repeats; ++k) {
+    EXPECT_EQ(rays["rows"]["complete 4x16"]["spp_per_seed"][k], 4);
+    EXPECT_EQ(rays["rows"]["incomplete 64x1"]["spp_per_seed"][k], 64);
+  }
+  expect_unbiased_first_seed(rays, "complete 4x16");
+  expect_unbiased_first_seed(rays, "incomplete 64x1");
+  for (const auto& [label, row] : rays["rows"].items()) expect_repeated_row(row, repeats, label);
+  // Equal time: every render ran at least the budget (the pass that reaches
+  // it finishes), and the budget is the incomplete render's median at equal rays.
+  const auto& timed = n["equal_time"];
+  const double budget = timed["equal_time_seconds"].get<double>();
+  EXPECT_DOUBLE_EQ(budget, rays["rows"]["incomplete 64x1"]["seconds_median"].get<double>());
+  for (const auto& [label, row] : timed["rows"].items()) {
+    expect_repeated_row(row, repeats, label);
+    for (const auto& seconds : row["seconds_per_seed"]) EXPECT_GE(seconds.get<double>(), budget) << label;
+    for (const auto& spp : row["spp_per_seed"]) EXPECT_EQ(spp.get<unsigned>() % 4, 0u) << label;  // whole passes
+  }
+  // The headline names the equal-time winner, from the efficiency interval
+  // when the times are resolved, else from the MSE interval.
+  const auto& incomplete = timed["rows"]["incomplete 4x1 per pass"];
+  const bool resolved = incomplete["time_resolved"].get<bool>();
+  EXPECT_EQ(n["equal_time_decided_by"], resolved ? "efficiency_ratio" : "mse_ratio");
+  const auto& ratio = resolved ? incomplete["efficiency_ratio"] : incomplete["mse_ratio"];
+  const std::string winner = n["equal_time_winner"].get<std::string>();
+  EXPECT_EQ(winner, ratio["low"].get<double>() > 1    ? "incomplete"
+                    : ratio["high"].get<double>() < 1 ? "complete"
+                                                      : "neither");
+  EXPECT_EQ(section.text.front().rfind("At equal time, ", 0), 0u) << section.text.front();
 }
 
 }  // namespace

@@ -9,12 +9,16 @@
 
 #include <algorithm>
 #include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <random>
 #include <set>
 
+#include "report/jittered_edge.hpp"
 #include "section_harness.hpp"
+#include "stratum/analysis/integrands.hpp"
 
 namespace stratum::report {
 namespace {
@@ -91,12 +95,100 @@ TEST(ReportSamplingSections, StratificationSlopesAndRandomVariances) {
   EXPECT_NEAR(slope("smooth", "jittered:none"), -2.0, 0.3);
   EXPECT_LT(slope("smooth", "sobol:owen"), -2.5);
   EXPECT_LT(slope("smooth", "pmj02:none"), -2.5);
+  // The slanted edge joins the study, and jittered's measured variance agrees
+  // with the exact Σ a_i(1 − a_i)/N² on both edges: (R − 1) s²/σ² ~ χ²(R − 1)
+  // for normal estimates, taken from N = 256 on (at least 16 cut cells, whose
+  // Bernoulli sum is near normal); family α = 1e-3 over both edges (Šidák).
+  ASSERT_TRUE(numbers.at("slanted_edge").at("samplers").contains("jittered:none"));
+  const auto& prediction = numbers.at("jittered_prediction");
+  ASSERT_EQ(prediction.size(), counts);
+  std::size_t tested = 0;
+  for (const auto& row : prediction) tested += row["n"].get<double>() >= 256 ? 2 : 0;
+  const auto [low_p, high_p] = chi_squared_interval(runs - 1, sidak(1e-3, double(tested)));
+  for (const auto& row : prediction) {
+    EXPECT_GE(row["slanted_edge_cut_cells"].get<double>(), row["grid"].get<double>());  // a slanted line cuts ≥ n cells
+    if (row["n"].get<double>() < 256) continue;
+    for (const char* key : {"edge_measured_over_predicted", "slanted_edge_measured_over_predicted"}) {
+      EXPECT_GT((runs - 1) * row[key].get<double>(), low_p) << key << " N = " << row["n"];
+      EXPECT_LT((runs - 1) * row[key].get<double>(), high_p) << key << " N = " << row["n"];
+    }
+  }
+  // The random/jittered variance ratio at the largest N: its 95% F interval
+  // holds the estimate, and the true ratio (p(1 − p)/N over the exact
+  // jittered variance) lies in the 99.9% F interval (α = 1e-3).
+  const auto& ratio = numbers.at("edge_variance_ratio_random_over_jittered");
+  EXPECT_LT(ratio["low"].get<double>(), ratio["estimate"].get<double>());
+  EXPECT_GT(ratio["high"].get<double>(), ratio["estimate"].get<double>());
+  {
+    const double largest = numbers["counts"].back().get<double>();
+    const double truth = p * (1 - p) / largest / prediction.back()["edge"].get<double>();
+    const boost::math::fisher_f f(runs - 1.0, runs - 1.0);
+    const double estimate = ratio["estimate"].get<double>();
+    EXPECT_GT(truth, estimate / boost::math::quantile(boost::math::complement(f, 5e-4)));
+    EXPECT_LT(truth, estimate / boost::math::quantile(f, 5e-4));
+  }
   // The sentence quotes the measured jittered slope.
   EXPECT_NE(run.section.text[0].find(format_number(slope("edge", "jittered:none"))), std::string::npos);
   // latin-square makes only 3D points: validate_report_options refuses it before a report runs, and the
   // section, given it anyway, leaves it out and says so.
   EXPECT_FALSE(numbers.at("edge").at("samplers").contains("latin-square:none"));
   EXPECT_EQ(numbers.at("skipped_extras"), nlohmann::json::array({"latin-square"}));
+}
+
+// The exact jittered variance of an edge, Σ a_i(1 − a_i)/N², against a
+// brute-force Monte Carlo: R independent jittered estimates (one uniform point
+// per cell, std::mt19937_64, fixed seed) of the registry's own integrands
+// (the step and the slanted edge-random of §4), so the half-planes are checked
+// too. The sample variance s² of R = 20000 estimates has standard error
+// √((m4 − s⁴)/R) (m4 the fourth central moment); |s² − exact| < 4.5 of them
+// per test (two-sided α ≈ 6.8e-6), 6 tests: family α < 5e-5.
+TEST(JitteredEdgeVariance, ExactFormulaAgainstBruteForceMonteCarlo) {
+  const std::uint64_t slanted_seed = 10;  // section_stratification.cpp's slanted edge
+  const std::vector<std::pair<HalfPlane, std::unique_ptr<const analysis::Integrand>>> edges = [&] {
+    std::vector<std::pair<HalfPlane, std::unique_ptr<const analysis::Integrand>>> list;
+    list.emplace_back(HalfPlane{{1 / std::numbers::pi, 0}, {1, 0}}, analysis::make_integrand("step", 2));
+    list.emplace_back(random_edge_half_plane(slanted_seed),
+                      analysis::make_integrand("edge-random", 2, {{"seed", {double(slanted_seed)}}}));
+    return list;
+  }();
+  std::mt19937_64 generator(20261202);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  const int repeats = 20000;
+  for (const auto& [plane, integrand] : edges) {
+    // The half-plane is the integrand's: equal areas over the square.
+    EXPECT_NEAR(half_plane_area(plane, 0, 0, 1, 1), integrand->exact(), 1e-12);
+    for (const std::uint64_t n : {4u, 8u, 16u}) {
+      std::vector<double> estimates(repeats), points(2 * n * n), values(n * n);
+      for (double& estimate : estimates) {
+        for (std::uint64_t i = 0; i < n; ++i)
+          for (std::uint64_t j = 0; j < n; ++j) {
+            points[2 * (i * n + j)] = (double(i) + uniform(generator)) / double(n);
+            points[2 * (i * n + j) + 1] = (double(j) + uniform(generator)) / double(n);
+          }
+        integrand->evaluate(points.data(), n * n, values.data());
+        double sum = 0;
+        for (const double v : values) sum += v;
+        estimate = sum / double(n * n);
+      }
+      double mean = 0;
+      for (const double e : estimates) mean += e / repeats;
+      double m2 = 0, m4 = 0;
+      for (const double e : estimates) m2 += (e - mean) * (e - mean) / repeats, m4 += std::pow(e - mean, 4) / repeats;
+      const double s2 = m2 * repeats / (repeats - 1);
+      const double standard_error = std::sqrt((m4 - m2 * m2) / repeats);
+      const double exact = jittered_edge_variance(plane, n);
+      EXPECT_NEAR(s2, exact, 4.5 * standard_error) << "n = " << n << ", exact " << exact;
+      EXPECT_GT(cut_cells(plane, n), 0u);
+    }
+  }
+  // The axis-aligned edge in closed form: one column of n cells, each covered
+  // frac(n/π), so Var = n·a(1 − a)/n⁴; it cuts exactly n cells.
+  const HalfPlane step{{1 / std::numbers::pi, 0}, {1, 0}};
+  for (const std::uint64_t n : {4u, 8u, 64u, 512u}) {
+    const double a = double(n) / std::numbers::pi - std::floor(double(n) / std::numbers::pi);
+    EXPECT_NEAR(jittered_edge_variance(step, n), a * (1 - a) / std::pow(double(n), 3), 1e-12 / std::pow(double(n), 3));
+    EXPECT_EQ(cut_cells(step, n), n);
+  }
 }
 
 TEST(ReportSamplingSections, DimensionMatchesClosedFormMidpointSums) {
@@ -211,6 +303,37 @@ TEST(ReportSamplingSections, FourViewsAgreeWithWhiteNoiseAndClosedForms) {
   // Stratification lowers the variance: jittered's edge variance is Θ(N^-1.5), i.e. about 1/√N = 1/16 of
   // random's here; a factor 4 is far outside the χ² spread of both.
   EXPECT_LT(patterns["jittered"]["edge_variance"].get<double>(), patterns["random"]["edge_variance"].get<double>() / 4);
+  // The periodic Poisson disk (as §10 and §12 use it) beside the plain one.
+  ASSERT_TRUE(patterns.contains("poisson-disk(periodic=1)"));
+  // Quadrature rules at the same N: the product midpoint rule of the separable
+  // Gaussian is the square of the 1D midpoint sum (an independent oracle);
+  // product Gauss–Legendre with √N = 16 nodes a side is exact to rounding on
+  // it (its error bound is ~ (2^-(2·16)) · f^(32)/32!, far below 1e-14) and
+  // so beats every randomized pattern's RMSE.
+  const auto& quadrature = numbers["quadrature"];
+  const int side = quadrature["grid"].get<int>();
+  ASSERT_EQ(side * side, static_cast<int>(n));
+  double one_d = 0;
+  for (int i = 0; i < side; ++i) one_d += std::exp(-std::pow((i + 0.5) / side, 2)) / side;
+  EXPECT_NEAR(quadrature["midpoint"]["gaussian_error"].get<double>(), std::abs(one_d * one_d - gaussian_exact()), 1e-15);
+  EXPECT_LT(quadrature["gauss_legendre"]["gaussian_error"].get<double>(), 1e-14);
+  for (const auto& [name, entry] : patterns.items())
+    EXPECT_LT(quadrature["gauss_legendre"]["gaussian_error"].get<double>(), entry["smooth_rmse"].get<double>()) << name;
+  // On the quarter disk the rules have errors of edge size, not rounding size.
+  EXPECT_GT(quadrature["gauss_legendre"]["disk_error"].get<double>(), 1e-6);
+  EXPECT_GT(quadrature["midpoint"]["disk_error"].get<double>(), 1e-6);
+  // The departure from the lecture is stated from the ranks.
+  bool nets_ahead = true;
+  for (const char* key : {"edge_variance", "star", "l2_star", "smooth_rmse"})
+    for (const char* net : {"sobol:owen", "pmj02"})
+      for (const char* recommended : {"jittered", "poisson-disk(periodic=1)"})
+        nets_ahead = nets_ahead && patterns[net][std::string(key) + "_rank"].get<int>() <
+                                       patterns[recommended][std::string(key) + "_rank"].get<int>();
+  EXPECT_EQ(numbers["nets_ahead_outside_the_spectrum"].get<bool>(), nets_ahead);
+  for (const auto& [name, entry] : patterns.items()) {
+    EXPECT_GE(entry["mean_rank"].get<double>(), 1.0) << name;
+    EXPECT_LE(entry["mean_rank"].get<double>(), double(patterns.size())) << name;
+  }
   // Ranks: each column's best rank is 1 and the ranks stay within the pattern count.
   const std::size_t count = patterns.size();
   for (const char* key : {"low_frequency_power", "effective_nyquist", "peak_power", "edge_variance", "star", "l2_star",

@@ -2,7 +2,8 @@
 or linear axes, with optional error bars and dotted reference curves.
 Data: {"columns": C, "title": "...", "panels": [{"title", "xlabel", "ylabel",
        "xlog", "ylog", "series": [{"label", "x", "y", "yerr" (optional),
-       "reference" (bool: dotted, no markers)}]}]}
+       "reference" (bool: dotted, no markers), "dashed" (bool: a dashed line, no
+       markers: a prediction drawn over measurements)}]}]}
 Usage: python3 report_lines.py DATA.json OUT.png"""
 import json
 import math
@@ -38,6 +39,8 @@ for index, axes in enumerate(axes_grid.flat):
     for series in panel["series"]:
         if series.get("reference", False):
             axes.plot(series["x"], series["y"], linestyle=":", color="0.4", label=series.get("label"))
+        elif series.get("dashed", False):
+            axes.plot(series["x"], series["y"], linestyle="--", linewidth=1.5, label=series.get("label"))
         elif series.get("yerr") is not None:
             axes.errorbar(series["x"], series["y"], yerr=series["yerr"], marker="o", markersize=3, capsize=2,
                           label=series.get("label"))

@@ -1,0 +1,148 @@
+#include "repeated_comparison.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "sections.hpp"
+#include "stratum/util/error.hpp"
+#include "stratum/util/hash.hpp"
+
+namespace stratum::report {
+
+RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
+                                           const std::vector<render::CompareConfig>& configs,
+                                           const render::CompareOptions& options, unsigned repeats) {
+  require(repeats >= 1, "repeats", repeats, "must be at least 1");
+  RepeatedComparison result;
+  result.repeats = repeats;
+  result.reference_spp = options.reference_spp;
+  result.equal_time = options.equal_time;
+  result.mse.resize(configs.size());
+  result.seconds.resize(configs.size());
+  result.samples.resize(configs.size());
+  for (const auto& config : configs) result.labels.push_back(config.label);
+  for (unsigned k = 0; k < repeats; ++k) {
+    std::vector<render::CompareConfig> seeded = configs;
+    if (k > 0)  // every configuration of a repeat shares its seed: paired comparisons
+      for (auto& config : seeded) config.settings.sampler.seed = hash64(config.settings.sampler.seed, k);
+    render::CompareImages pictures;
+    const std::vector<render::CompareRow> rows = render::compare(scene.scene, scene.key, seeded, options, &pictures);
+    for (std::size_t c = 0; c < rows.size(); ++c) {
+      result.mse[c].push_back(rows[c].mse);
+      result.seconds[c].push_back(rows[c].seconds);
+      result.samples[c].push_back(rows[c].samples);
+    }
+    result.reference_cached = result.reference_cached && pictures.reference_cached;
+    if (k == 0) result.reference = std::move(pictures.reference);
+    result.images.push_back(std::move(pictures.images));
+  }
+  return result;
+}
+
+std::vector<RowStatistics> row_statistics(const RepeatedComparison& comparison,
+                                          const std::vector<std::vector<double>>& mse, double confidence) {
+  require(mse.size() == comparison.labels.size(), "mse", mse.size(), "must hold one list per configuration");
+  std::vector<RowStatistics> result;
+  const auto& first_mse = mse.front();
+  const auto& first_seconds = comparison.seconds.front();
+  std::vector<double> first_cost;  // MSE × seconds: 1 / efficiency
+  for (unsigned k = 0; k < comparison.repeats; ++k) first_cost.push_back(first_mse[k] * first_seconds[k]);
+  for (std::size_t c = 0; c < mse.size(); ++c) {
+    RowStatistics row;
+    row.mse = mean_and_error(mse[c]);
+    row.median_seconds = median(comparison.seconds[c]);
+    row.mse_ratio = paired_ratio_interval(first_mse, mse[c], confidence);
+    row.time_ratio = paired_ratio_interval(comparison.seconds[c], first_seconds, confidence);
+    std::vector<double> cost;
+    for (unsigned k = 0; k < comparison.repeats; ++k) cost.push_back(mse[c][k] * comparison.seconds[c][k]);
+    row.efficiency_ratio = paired_ratio_interval(first_cost, cost, confidence);
+    row.time_resolved = c > 0 && comparison.repeats > 1 && !row.time_ratio.contains(1.0);
+    result.push_back(row);
+  }
+  return result;
+}
+
+std::string interval_method(unsigned repeats, double confidence) {
+  return fmt::format("{} seeds, each rendering every configuration (paired); a ratio is the geometric mean of the "
+                     "per-seed ratios with a Student-t {:g}% interval on their logarithms ({} degrees of freedom); "
+                     "seconds are medians",
+                     repeats, 100 * confidence, repeats - 1);
+}
+
+namespace {
+
+std::string mse_text(const MeanError& m) {
+  return m.standard_error > 0 ? format_number(m.mean) + " ± " + format_number(m.standard_error, 2) : format_number(m.mean);
+}
+
+}  // namespace
+
+std::string efficiency_text(const RowStatistics& row) {
+  if (row.time_resolved) return format_interval(row.efficiency_ratio) + "×";
+  return fmt::format("not resolved: the times agree within ±{}%", format_number(noise_percent(row.time_ratio), 2));
+}
+
+Table repeated_table(const RepeatedComparison& comparison, const std::vector<RowStatistics>& statistics,
+                     const std::string& caption) {
+  Table table{caption,
+              {"configuration", "eye rays/pixel", "MSE (mean ± s.e.)", "median seconds", "MSE ratio (first/this)",
+               "time ratio (this/first)", "efficiency ratio (this/first)"},
+              {}};
+  for (std::size_t c = 0; c < statistics.size(); ++c) {
+    const RowStatistics& row = statistics[c];
+    const auto& samples = comparison.samples[c];
+    const std::uint32_t low = *std::min_element(samples.begin(), samples.end());
+    const std::uint32_t high = *std::max_element(samples.begin(), samples.end());
+    const std::string spp = low == high ? std::to_string(low) : std::to_string(low) + "–" + std::to_string(high);
+    if (c == 0) {
+      table.rows.push_back({comparison.labels[c], spp, mse_text(row.mse), format_number(row.median_seconds),
+                            "1 (baseline)", "1 (baseline)", "1 (baseline)"});
+      continue;
+    }
+    table.rows.push_back({comparison.labels[c], spp, mse_text(row.mse), format_number(row.median_seconds),
+                          format_interval(row.mse_ratio), format_interval(row.time_ratio),
+                          row.time_resolved ? format_interval(row.efficiency_ratio)
+                                            : fmt::format("not quoted: times equal within ±{}%",
+                                                          format_number(noise_percent(row.time_ratio), 2))});
+  }
+  return table;
+}
+
+nlohmann::json interval_json(const RatioInterval& interval) {
+  return {{"estimate", interval.estimate},
+          {"low", interval.low},
+          {"high", interval.high},
+          {"count", interval.count},
+          {"confidence", interval.confidence}};
+}
+
+nlohmann::json repeated_numbers(const RepeatedComparison& comparison, const std::vector<RowStatistics>& statistics) {
+  nlohmann::json rows = nlohmann::json::object();
+  for (std::size_t c = 0; c < statistics.size(); ++c) {
+    const RowStatistics& row = statistics[c];
+    rows[comparison.labels[c]] = {
+        {"spp_per_seed", comparison.samples[c]},
+        {"mse_per_seed", comparison.mse[c]},
+        {"seconds_per_seed", comparison.seconds[c]},
+        {"mse_mean", row.mse.mean},
+        {"mse_standard_error", row.mse.standard_error},
+        {"seconds_median", row.median_seconds},
+        {"mse_ratio", interval_json(row.mse_ratio)},
+        {"time_ratio", interval_json(row.time_ratio)},
+        {"time_resolved", row.time_resolved},
+        // Quoted only when the times differ beyond their noise (else null).
+        {"efficiency_ratio", row.time_resolved ? interval_json(row.efficiency_ratio) : nlohmann::json(nullptr)},
+        {"efficiency_ratio_unresolved", interval_json(row.efficiency_ratio)}};
+  }
+  return {{"width", comparison.reference.width},
+          {"height", comparison.reference.height},
+          {"reference_spp", comparison.reference_spp},
+          {"reference_cached", comparison.reference_cached},
+          {"repeats", comparison.repeats},
+          {"equal_time_seconds", comparison.equal_time},
+          {"interval_method", interval_method(comparison.repeats)},
+          {"rows", rows}};
+}
+
+}  // namespace stratum::report
