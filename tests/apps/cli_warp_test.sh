@@ -73,4 +73,22 @@ expect_error "invalid cos_theta_max = 3" warp --map cone -n 4 --warp-param cos_t
 expect_error "output" warp --map disk-polar -n 4 -o /nonexistent/x.txt
 [ -z "$(ls -A "$tmp" | grep -v -e '^out$' -e '^err$' -e '^w\.npy$' -e '^h\.csv$' -e '^v\.txt$')" ] && ok || fail "stray files: $(ls -A "$tmp")"
 
+# --pdf-at / --invert: the pdf at given points and their preimages, against the forward warp's own output.
+"$stratum" warp -m disk-concentric -n 64 -s sobol:owen --seed 3 -o "$tmp/fw.txt" && ok || fail "forward warp"
+awk '{print $1, $2}' "$tmp/fw.txt" >"$tmp/fw_points.txt"
+"$stratum" points -s sobol:owen --seed 3 -n 64 -d 2 -o "$tmp/fw_u.txt" && ok || fail "the warp's input"
+"$stratum" warp -m disk-concentric --pdf-at "$tmp/fw_points.txt" -o "$tmp/pdf_at.txt" && ok || fail "--pdf-at"
+"$stratum" warp -m disk-concentric --invert "$tmp/fw_points.txt" -o "$tmp/inv.txt" && ok || fail "--invert"
+/usr/bin/python3 - "$tmp/fw.txt" "$tmp/pdf_at.txt" "$tmp/fw_u.txt" "$tmp/inv.txt" <<'PY' && ok || fail "--pdf-at = forward pdf, --invert = input"
+import sys
+import numpy as np
+fw, pdf_at, u, inv = (np.loadtxt(f) for f in sys.argv[1:5])
+assert np.array_equal(fw, pdf_at), "pdf at the warped points differs from the forward table"
+assert np.allclose(u, inv, atol=1e-12), np.abs(u - inv).max()
+PY
+printf '0\n1\n' >"$tmp/normal_points.txt"
+"$stratum" warp -m normal --pdf-at "$tmp/normal_points.txt" | awk 'NR==1 && ($2 - 0.3989422804014327)^2 < 1e-24 {ok=1} END {exit !ok}' && ok || fail "normal pdf at 0"
+expect_error "disk-concentric maps to 2-D points: give 2 columns" warp -m disk-concentric --invert "$tmp/fw.txt"
+expect_error "drop -n" warp -m disk-concentric --invert "$tmp/fw_points.txt" -n 4
+expect_error "not both" warp -m disk-concentric --invert "$tmp/fw_points.txt" --pdf-at "$tmp/fw_points.txt"
 finish
