@@ -69,9 +69,12 @@ identical "disc-tiny" discrepancy -m cd -s random -n 40 -d 5 --json  # 2 row blo
 
 # --- runs ----------------------------------------------------------------------------------
 identical_json integrate integrate --integrand genz-gaussian -d 3 -s sobol:owen -n 256 --runs 7 --json
+identical_json tolerance integrate --integrand genz-gaussian -d 3 -s sobol:owen -n 16 --runs 5 --abs-tol 1e-3 --json
 identical_json converge converge --integrand genz-gaussian -d 2 --samplers random,sobol:owen --n 16:256:4 --runs 5 --json
 identical_json dimension study dimension --dims 1:2 --n 16:256 --runs 3 --json
 identical_json importance study importance --runs 3 --samples 64 --json
+identical_json mis study mis --exponents 1,100 --angles 2,30 --runs 3 --samples 64 --json
+identical mis-table study mis --exponents 10 --angles 10 --runs 2 --samples 8
 identical_json mitchell study mitchell --counts 16,64 --realizations 2 --lines 200 --json
 
 # --- render: image, EXR, variance and the reference cache, byte for byte --------------------
