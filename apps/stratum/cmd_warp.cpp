@@ -61,6 +61,12 @@ void list_warps() {
 
 void run_warp(const WarpOptions& options) {
   if (options.list) return list_warps();
+  if (options.map.empty()) {  // before -n: the map is what a bare `stratum warp` lacks first
+    std::string names;
+    for (const auto& info : warps()) names += (names.empty() ? "" : ", ") + info.name;
+    throw invalid_argument("map", "(missing)", "give -m MAP, one of " + names);
+  }
+  find_warp(options.map);
   require(options.n >= 1, "n", options.n, "must be a positive integer");
   std::map<std::string, std::string> texts = parse_key_values("warp-param", options.warp_params);
   for (auto& [key, text] : texts) text = warp_param_text(key, text);

@@ -42,10 +42,7 @@ _SCIPY_METHODS = {"CD": "cd", "WD": "wd", "MD": "md", "L2-star": "l2-star"}
 
 def _points(x) -> np.ndarray:
     """x as a C-ordered float64 array of shape (n, d); a 1-D array is n points in one dimension."""
-    try:
-        array = np.asarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InvalidArgument(f"invalid x = {type(x).__name__} object: must be an array of numbers of shape (n, d)") from None
+    array = _checks.real_array("x", x, "an array of numbers of shape (n, d)")
     if array.ndim == 1:
         array = array[:, None]
     if array.ndim != 2:
