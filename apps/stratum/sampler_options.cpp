@@ -106,6 +106,9 @@ void read_numbers_strictly(CLI::App& app) {
     const std::string type = option->get_type_name();
     if (type != "INT" && type != "UINT" && type != "FLOAT") continue;
     const std::string name = option_name(*option);
+    // --threads, --seed and --start are read by their own strict parsers
+    // (parse_threads, parse_seed, parse_uint64), whose messages say their rule.
+    if (name == "threads" || name == "seed" || name == "start") continue;
     option->transform(CLI::Validator(  // transform: it may rewrite the text (check() may not)
         [name, type](std::string& text) {
           read_number(name, type, text);

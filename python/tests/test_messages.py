@@ -2,6 +2,8 @@
 stratum.InvalidArgument naming the argument and the value, never pybind11's
 generic TypeError; complex numbers and strings are not read as reals; no
 result is inf or nan."""
+import re
+
 import numpy as np
 import pytest
 
@@ -17,7 +19,7 @@ from stratum import InvalidArgument
     ({"n": 4, "randomize": 3}, "invalid randomize = 3: must be a string or None"),
 ])
 def test_points_arguments(kwargs, text):
-    with pytest.raises(InvalidArgument, match=text.replace("(", r"\(").replace(")", r"\)").replace("+", r"\+")):
+    with pytest.raises(InvalidArgument, match=re.escape(text)):
         stratum.points("halton", **{"d": 2, **kwargs})
 
 
@@ -64,7 +66,7 @@ def test_warp_density_not_representable():
 
 
 def test_warp_invert_outside_domain():
-    with pytest.raises(InvalidArgument, match=r"invalid p\[1\] = \(2, 0\): is outside the warp's domain"):
+    with pytest.raises(InvalidArgument, match=r"invalid p\[1\] = \(2, 0\): is outside the warp's domain: its pdf there is 0"):
         stratum.warp_invert("disk-polar", np.array([[0.1, 0.2], [2.0, 0.0]]))
     u = stratum.warp_invert("disk-polar", np.array([[0.1, 0.2], [0.0, -0.5]]))
     assert np.all((u >= 0) & (u <= 1))

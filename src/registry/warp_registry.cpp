@@ -129,19 +129,24 @@ std::vector<double> warp_invert(const Warp& warp, const double* p, std::size_t n
   check_rows("p", p, n, warp.output_dim(), false);
   std::vector<double> out(n * warp.input_dim());
   warp.invert(p, n, out.data());
-  // A point outside the warp's domain has no u: its "inverse" would be a
-  // number outside [0, 1] (or nan), printed as if it were one.
+  // A point outside the warp's domain (where its pdf is 0) has no u: the
+  // inverses clamp, so it would come back as a u that maps elsewhere.
   const unsigned in = warp.input_dim(), dim = warp.output_dim();
-  for (std::size_t i = 0; i < n; ++i)
-    for (unsigned k = 0; k < in; ++k) {
-      const double v = out[i * in + k];
-      if (v >= 0.0 && v <= 1.0) continue;
-      std::string point;
-      for (unsigned j = 0; j < dim; ++j) point += (j ? ", " : "") + to_message_string(p[i * dim + j]);
-      throw invalid_argument("p[" + std::to_string(i) + "]", "(" + point + ")",
-                             "is outside the warp's domain: its inverse u[" + std::to_string(k) + "] = " +
-                                 to_message_string(v) + " is not in [0, 1]");
-    }
+  std::vector<double> density(n);
+  warp.pdf(p, n, density.data());
+  auto refuse = [&](std::size_t i, const std::string& why) {
+    std::string point;
+    for (unsigned j = 0; j < dim; ++j) point += (j ? ", " : "") + to_message_string(p[i * dim + j]);
+    throw invalid_argument("p[" + std::to_string(i) + "]", "(" + point + ")", "is outside the warp's domain: " + why);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(density[i] > 0) || !std::isfinite(density[i]))
+      refuse(i, "its pdf there is " + to_message_string(density[i]) + ", so no u maps to it");
+    for (unsigned k = 0; k < in; ++k)
+      if (!(out[i * in + k] >= 0.0 && out[i * in + k] <= 1.0))
+        refuse(i, "its inverse u[" + std::to_string(k) + "] = " + to_message_string(out[i * in + k]) +
+                      " is not in [0, 1]");
+  }
   return out;
 }
 

@@ -54,6 +54,11 @@ grep -q "undefined" "$tmp/out" && ok || fail "converge at variance 0: no 'undefi
 grep -q "standard error  unavailable: the 4 runs gave identical estimates" "$tmp/out" && ok \
   || fail "identical runs are not flagged: $(cat "$tmp/out")"
 
+# --- measures: a value that over- or underflows is refused, not printed -------
+expect_error "invalid d = 2000: l2-star's terms .* underflow double precision past d = 644" discrepancy -m l2-star -s random -n 16 -d 2000
+expect_error "invalid d = 5000: cd of these 16 points is inf: not representable" discrepancy -m cd -s random -n 16 -d 5000
+"$stratum" discrepancy -m l2-star -s random -n 16 -d 644 >/dev/null && ok || fail "l2-star at d = 644 refused"
+
 # --- point files -------------------------------------------------------------
 printf '\xef\xbb\xbf0.1 0.2\n0.3 0.4\n' >"$tmp/bom.txt"
 "$stratum" discrepancy -m l2-star "$tmp/bom.txt" >"$tmp/out" 2>"$tmp/err" && ok || fail "BOM refused: $(cat "$tmp/err")"

@@ -88,7 +88,7 @@ expect_error "invalid d = 3" spectrum "$tmp/p3.txt"
 "$stratum" points --sampler random -n 21 -d 2 -o "$tmp/r21.txt"
 expect_error "invalid n of realization 1 = 21" spectrum "$tmp/r0.txt" "$tmp/r21.txt"
 printf '0.1 0.2\n0.3 1.5\n' >"$tmp/out.txt"
-expect_error "point\[1\]\[1\]" spectrum "$tmp/out.txt"
+expect_error "out.txt: line 2, column 2 is 1.5: coordinates must be in \[0, 1\]" spectrum "$tmp/out.txt"
 expect_error "invalid max-frequency = 0" spectrum --sampler random -n 100 -k 0 -o "$tmp/bad.png"
 [ ! -e "$tmp/bad.png" ] && ok || fail "a failed run left bad.png"
 
