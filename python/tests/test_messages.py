@@ -82,3 +82,8 @@ def test_variance_needs_two_samples():
         pytest.skip("built without the renderer")
     with pytest.raises(InvalidArgument, match="invalid with_variance = True: needs spp >= 2"):
         stratum.render(width=4, height=4, spp=1, passes=1, with_variance=True)
+
+
+def test_confidence_must_be_real():
+    with pytest.raises(InvalidArgument, match="invalid confidence = '0.9': must be a level strictly between 0 and 1"):
+        stratum.integrate("disk", "random", n=16, runs=4, confidence="0.9")
