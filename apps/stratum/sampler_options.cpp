@@ -91,13 +91,10 @@ static void read_number(const std::string& name, const std::string& type, std::s
   if (type == "UINT") {
     text = std::to_string(parse_uint64(name, text));
   } else if (type == "INT") {
-    static const Param int64 = params::integer(name, "", "", half_open(-0x1p63, 0x1p63));
-    Param param = int64;
-    param.name = name;
-    text = std::to_string(std::get<std::int64_t>(parse_param(param, text)));
+    const Param int64 = params::integer(name, "", "", half_open(-0x1p63, 0x1p63));
+    text = std::to_string(std::get<std::int64_t>(parse_param(int64, text)));
   } else {
-    Param param = params::real(name, "", "", any_real());
-    parse_param(param, text);
+    parse_param(params::real(name, "", "", any_real()), text);
   }
 }
 
