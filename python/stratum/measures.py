@@ -137,7 +137,8 @@ def local_discrepancy(x, resolution: int = 64) -> np.ndarray:
     D* itself is ``star_discrepancy_box(x)``. Raises InvalidArgument for d != 2,
     R outside [1, 4096] or a point outside [0, 1].
     """
-    if isinstance(resolution, (bool, np.bool_)) or not isinstance(resolution, (numbers.Integral, np.integer)):
+    if (isinstance(resolution, (bool, np.bool_)) or not isinstance(resolution, (numbers.Integral, np.integer))
+            or not 1 <= resolution <= 4096):
         raise InvalidArgument(f"invalid resolution = {resolution!r}: must be an integer in [1, 4096]")
     return _stratum.local_discrepancy(_points(x), int(resolution))
 

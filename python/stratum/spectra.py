@@ -43,8 +43,8 @@ def _realizations(x) -> np.ndarray:
 
 
 def _positive_int(name, value):
-    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)) or value < 1:
-        raise InvalidArgument(f"invalid {name} = {value!r}: must be a positive integer")
+    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)) or not 1 <= value < 2**31:
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be a positive integer below 2^31")
     return int(value)
 
 

@@ -97,7 +97,9 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     n = _count("n", n, "must be a positive integer")
     runs = _small("runs", runs, "must be in [1, 1000000]", 1, 1000000)
     threads = _checks.threads(threads)
-    return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize or "", n, runs,
+    integrand, sampler = _checks.text("integrand", integrand), _checks.text("sampler", sampler)
+    randomize = _checks.text("randomize", randomize, optional=True)
+    return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize, n, runs,
                               _seed(seed), threads, float(confidence))
 
 
@@ -125,8 +127,11 @@ def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = N
     slope_standard_error only says how straight the line is. Numbers other
     than timings do not depend on `threads`.
     """
+    integrand = _checks.text("integrand", integrand)
     if isinstance(samplers, str):
         samplers = _stratum.split_spec_list(samplers)
+    if not hasattr(samplers, "__iter__"):
+        raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")
     samplers = list(samplers)
     if not samplers or not all(isinstance(s, str) for s in samplers):
         raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")

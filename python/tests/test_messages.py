@@ -87,3 +87,16 @@ def test_variance_needs_two_samples():
 def test_confidence_must_be_real():
     with pytest.raises(InvalidArgument, match="invalid confidence = '0.9': must be a level strictly between 0 and 1"):
         stratum.integrate("disk", "random", n=16, runs=4, confidence="0.9")
+
+
+@pytest.mark.parametrize("call, text", [
+    (lambda: stratum.integrate(None), "invalid integrand = None: must be a string"),
+    (lambda: stratum.integrate("disk", None), "invalid sampler = None: must be a string"),
+    (lambda: stratum.integrate("disk", randomize=3), "invalid randomize = 3: must be a string or None"),
+    (lambda: stratum.converge("disk", None), "invalid samplers = None: give a list of names"),
+    (lambda: stratum.spectrum(np.full((8, 2), 0.5), max_frequency=2**70), "invalid max_frequency = 1180591620717411303424"),
+    (lambda: stratum.local_discrepancy(np.full((8, 2), 0.5), resolution=2**70), "invalid resolution = 1180591620717411303424"),
+])
+def test_no_pybind11_type_errors(call, text):
+    with pytest.raises(InvalidArgument, match=re.escape(text)):
+        call()
