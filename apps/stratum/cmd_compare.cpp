@@ -48,7 +48,7 @@ void run_compare(CompareCommand& o) {
                                          : render::parse_configs(read_json(o.configs), o.threads, o.seed);
   // Motion only for the time-pattern comparison: each isolates its own integral.
   const bool keep_motion = o.configs.empty() && o.builtin == "time-pattern";
-  const auto [scene, key] = render::comparison_scene(o.scene, keep_motion, int(o.width), int(o.height));
+  const auto [scene, key, note] = render::comparison_scene(o.scene, keep_motion, int(o.width), int(o.height));
   const auto rows = render::compare(scene, key, configs, o.run);
   if (o.json) {
     nlohmann::json out = nlohmann::json::array();
@@ -65,7 +65,7 @@ void run_compare(CompareCommand& o) {
       row["error_spectrum"] = {{"frequency", r.error_radial_frequency}, {"power", power}};
     }
     std::cout << nlohmann::json{{"scene", scene.name}, {"reference_spp", o.reference_spp}, {"equal_time", o.run.equal_time},
-                                {"rows", out}}.dump(2)
+                                {"scene_note", note}, {"rows", out}}.dump(2)
               << "\n";
     return;
   }
@@ -80,6 +80,7 @@ void run_compare(CompareCommand& o) {
              o.run.equal_time > 0 ? fmt::format("equal time: {} s each", o.run.equal_time) : std::string("equal samples"),
              o.reference_spp, o.run.cache_dir);
   if (!o.run.variance_dir.empty()) fmt::print("(variance images in {})\n", o.run.variance_dir);
+  if (!note.empty()) fmt::print("(scene: {})\n", note);
 }
 
 }  // namespace

@@ -39,6 +39,12 @@ nlohmann::json skipped_json(const sa::SamplerConvergence& entry) {
   return out;
 }
 
+/// A number of the table, or "undefined" where it has none (an efficiency
+/// at variance 0, a slope through log 0): never "inf" or "nan" as a result.
+std::string cell(double value, const char* format = "{:.4e}") {
+  return std::isfinite(value) ? fmt::format(fmt::runtime(format), value) : std::string("undefined");
+}
+
 nlohmann::json to_json(const sa::ConvergenceResult& result) {
   nlohmann::json samplers = nlohmann::json::array();
   for (const auto& entry : result.samplers) {
@@ -87,7 +93,10 @@ void run_converge(const ConvergeOptions& o) {
   fmt::print("integrand {} (d = {}), exact {:.17g}, {} runs per N\n", result.integrand, result.d, result.exact,
              result.runs);
   for (const auto& entry : result.samplers) {
-    if (entry.fitted == "variance")
+    if (!std::isfinite(entry.slope.slope))
+      fmt::print("\n{}:{}  slope of log {} vs log N: undefined (the {} is 0 or not finite at some N)\n",
+                 entry.sampler.name, entry.sampler.randomize, entry.fitted, entry.fitted);
+    else if (entry.fitted == "variance")
       fmt::print("\n{}:{}  slope of log variance vs log N: {:.3f}, {:g}% interval [{:.3f}, {:.3f}] (jackknife SE {:.3f}; "
                  "residual SE of the fit {:.3f})\n",
                  entry.sampler.name, entry.sampler.randomize, entry.slope.slope, 100 * entry.interval.confidence,
@@ -107,8 +116,8 @@ void run_converge(const ConvergeOptions& o) {
     fmt::print("{:>10} {:>12} {:>12} {:>12} {:>12} {:>12}\n", "N", "mean error", "RMSE", "variance", "seconds",
                "efficiency");
     for (const auto& row : entry.rows)
-      fmt::print("{:>10} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e}\n", row.n, row.mean_error, row.rmse,
-                 row.variance, row.seconds, row.efficiency);
+      fmt::print("{:>10} {:>12} {:>12} {:>12} {:>12} {:>12}\n", row.n, cell(row.mean_error), cell(row.rmse),
+                 cell(row.variance), cell(row.seconds), cell(row.efficiency));
   }
 }
 }  // namespace

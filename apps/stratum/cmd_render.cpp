@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
@@ -24,7 +26,8 @@ struct RenderOptions {
   std::string scene, output = "render.png", exr, variance, cache = ".stratum-cache";
   render::RenderSettings settings;
   SamplerOptions sampler{"sobol"};
-  std::int64_t spp = 16, width = 0, height = 0, reference_spp = 1024;
+  std::int64_t spp = 16, reference_spp = 1024;
+  std::optional<std::int64_t> width, height;  ///< given: overrides the scene's
   bool quiet = false, reference = false;
 };
 
@@ -35,6 +38,12 @@ void run_render(RenderOptions& options) {
                             options.sampler.randomize);
   options.settings.sampler.seed = options.sampler.seed;
   render::validate_settings(options.settings);
+  // Each given size overrides the scene's (as stratum.render's width= and height=); 0 is not "unset".
+  for (const auto& [name, size] : {std::pair{"width", options.width}, std::pair{"height", options.height}})
+    require(!size || (*size >= 1 && *size <= 16384), name, size.value_or(0), "must be an integer in [1, 16384]");
+  require(options.variance.empty() || options.reference || options.spp >= 2, "variance", options.variance,
+          "needs --spp 2 or more: a pixel's variance is estimated from its samples (this render takes " +
+              std::to_string(options.spp) + ")");
   require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",
           options.reference_spp, "must be in [1, 2^24]");
   // Every output checked and staged before the render, not after it (docs/outputs.md).
@@ -49,12 +58,8 @@ void run_render(RenderOptions& options) {
   std::vector<std::string> warnings;
   render::Scene scene = options.scene.empty() ? render::cornell_box() : render::load_scene(options.scene, &warnings);
   for (const auto& warning : warnings) fmt::print(stderr, "stratum: warning: {}\n", warning);
-  if (options.width > 0 || options.height > 0) {
-    require(options.width >= 1 && options.width <= 16384, "width", options.width, "must be in [1, 16384]");
-    require(options.height >= 1 && options.height <= 16384, "height", options.height, "must be in [1, 16384]");
-    scene.camera.width = static_cast<int>(options.width);
-    scene.camera.height = static_cast<int>(options.height);
-  }
+  if (options.width) scene.camera.width = static_cast<int>(*options.width);
+  if (options.height) scene.camera.height = static_cast<int>(*options.height);
   const bool show = !options.quiet && isatty(STDERR_FILENO);
   auto progress = [&](std::uint32_t done, std::uint32_t total, double seconds) {
     if (!show) return;

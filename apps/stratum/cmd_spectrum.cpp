@@ -45,9 +45,12 @@ std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
                              o.params.empty() ? o.randomize : o.params.front(),
                              "applies only to --sampler; a FILE is read as it is");
     if (o.realizations != 1)
-      throw invalid_argument("--realizations", std::to_string(o.realizations),
+      throw invalid_argument("realizations", std::to_string(o.realizations),
                              "applies only to --sampler; give one FILE per realization");
-    for (const auto& file : o.files) sets.push_back(io::read_points_strict(file));
+    for (const auto& file : o.files) {
+      sets.push_back(io::read_points_strict(file));
+      io::check_unit_cube(sets.back(), file);  // naming the line at fault
+    }
     return sets;
   }
   require(o.n.has_value(), "n", "(missing)", "--sampler needs -n N");
@@ -171,7 +174,7 @@ void add_spectrum_command(CLI::App& app) {
   add_sampler_options(*command, *o, "use this sampler's 2D points (realization r: seed + r)",
                       "seed of the first realization");
   command->add_option("-n", o->n, "number of points (with --sampler)");
-  command->add_option("-r,--realizations", o->realizations, "realizations to average (with --sampler)")
+  command->add_option("--realizations", o->realizations, "realizations to average (with --sampler)")
       ->capture_default_str();
   command->add_option("-k,--max-frequency", o->max_frequency,
                       "largest integer frequency K per axis (default: 2.5 sqrt(N), at least 16, at most 1024)");

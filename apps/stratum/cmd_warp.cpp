@@ -89,6 +89,12 @@ void run_on_points(const Warp& warp, const WarpOptions& options, TableOutput& ta
 
 void run_warp(const WarpOptions& options) {
   if (options.list) return list_warps();
+  if (options.map.empty()) {  // before -n: the map is what a bare `stratum warp` lacks first
+    std::string names;
+    for (const auto& info : warps()) names += (names.empty() ? "" : ", ") + info.name;
+    throw invalid_argument("map", "(missing)", "give -m MAP, one of " + names);
+  }
+  find_warp(options.map);
   const bool from_file = !options.pdf_at.empty() || !options.invert.empty();
   if (!options.pdf_at.empty() && !options.invert.empty())
     throw invalid_argument("invert", options.invert, "give --pdf-at FILE or --invert FILE, not both");

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "distributed_job.hpp"
+#include "sampler_options.hpp"
 #include "stratum/distributed.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/memory.hpp"
@@ -47,13 +48,19 @@ int main(int argc, char** argv) {
   stratum::io::install_signal_cleanup();  // Ctrl-C or SIGTERM: no staging file is left behind
   int code = 0;
   std::string message;
+  stratum::cli::read_numbers_strictly(app);  // one number syntax: the parameter schema's
   try {
+    stratum::cli::check_subcommand_names(app, argc, argv);
     app.parse(argc, argv);
     stratum::io::check_stdout();  // output lost on a full disk or a closed stdout is an error
   } catch (const CLI::ConversionError& e) {
     code = 2, message = fmt::format("{}: not a valid number for this option (see --help)", e.what());
   } catch (const CLI::ParseError& e) {
-    code = app.exit(e);  // usage errors and --help print themselves (on rank 0)
+    // Usage errors and --help print themselves (on rank 0); every usage
+    // error exits 2, as every bad argument does (CLI11's own codes are 100+).
+    code = app.exit(e) == 0 ? 0 : 2;
+  } catch (const stratum::cli::usage_error& e) {
+    code = 2, message = e.what();
   } catch (const stratum::distributed::PeerFailure&) {
     code = 1;  // another rank failed and says why
   } catch (const stratum::interrupted& e) {
@@ -67,7 +74,8 @@ int main(int argc, char** argv) {
   } catch (const stratum::memory_error& e) {
     code = 3, message = e.what();  // refused before allocating (stratum/memory.hpp)
   } catch (const std::bad_alloc&) {
-    code = 3, message = "out of memory";
+    code = 3, message = "out of memory: the system refused an allocation this command needs (ask for fewer points, "
+                        "a smaller image or fewer threads; STRATUM_MEMORY_LIMIT sets the guard, docs/cli.md)";
   } catch (const std::exception& e) {
     code = 1, message = e.what();
   }

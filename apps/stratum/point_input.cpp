@@ -26,7 +26,9 @@ PointSet load_points(const PointInput& o) {
                              o.params.empty() ? o.randomize : o.params.front(),
                              "applies only to --sampler; a FILE is read as it is");
     if (o.n || o.d) throw invalid_argument("-n/-d", o.file, "apply only to --sampler; a FILE has its own size");
-    return io::read_points_strict(o.file);
+    PointSet points = io::read_points_strict(o.file);
+    io::check_unit_cube(points, o.file);  // here, where the file's lines are known
+    return points;
   }
   require(o.n.has_value(), "n", "(missing)", "--sampler needs -n N");
   require(*o.n >= 1, "n", *o.n, "must be a positive integer");

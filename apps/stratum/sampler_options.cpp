@@ -1,6 +1,9 @@
 #include "sampler_options.hpp"
 
 #include <charconv>
+#include <functional>
+
+#include "stratum/registry/params.hpp"
 
 #include "stratum/util/error.hpp"
 
@@ -70,6 +73,68 @@ CLI::Option* add_threads_option(CLI::App& command, unsigned& threads, const std:
           help + " (0: every core)")
       ->type_name("INT")
       ->default_str(std::to_string(threads));
+}
+
+/// The name a message gives an option: its long name ("resolution"), else
+/// its short one ("n"), else the positional's.
+static std::string option_name(const CLI::Option& option) {
+  if (!option.get_lnames().empty()) return option.get_lnames().front();
+  if (!option.get_snames().empty()) return option.get_snames().front();
+  return option.get_name(true);
+}
+
+/// Reads `text` by the schema's syntax for numbers of CLI11 type `type`
+/// (INT, UINT or FLOAT) and rewrites it as plain decimal, so that CLI11's
+/// own conversion (which reads "010" as octal) reads the number the schema
+/// read. Throws invalid_argument naming `name`.
+static void read_number(const std::string& name, const std::string& type, std::string& text) {
+  if (type == "UINT") {
+    text = std::to_string(parse_uint64(name, text));
+  } else if (type == "INT") {
+    const Param int64 = params::integer(name, "", "", half_open(-0x1p63, 0x1p63));
+    text = std::to_string(std::get<std::int64_t>(parse_param(int64, text)));
+  } else {
+    parse_param(params::real(name, "", "", any_real()), text);
+  }
+}
+
+void read_numbers_strictly(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type != "INT" && type != "UINT" && type != "FLOAT") continue;
+    const std::string name = option_name(*option);
+    // --threads, --seed and --start are read by their own strict parsers
+    // (parse_threads, parse_seed, parse_uint64), whose messages say their rule.
+    if (name == "threads" || name == "seed" || name == "start") continue;
+    option->transform(CLI::Validator(  // transform: it may rewrite the text (check() may not)
+        [name, type](std::string& text) {
+          read_number(name, type, text);
+          return std::string();
+        },
+        "", "number"));
+  }
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) read_numbers_strictly(*command);
+}
+
+void check_subcommand_names(const CLI::App& app, int argc, const char* const* argv) {
+  const CLI::App* at = &app;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word.front() == '-') return;  // options, --help, --version: CLI11's to judge
+    const auto commands = at->get_subcommands([](const CLI::App*) { return true; });
+    if (commands.empty()) return;
+    const CLI::App* next = nullptr;
+    std::string names;
+    for (const CLI::App* command : commands) {
+      if (command->check_name(word)) next = command;
+      names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    if (!next) {
+      const std::string of = at == &app ? "" : " of " + at->get_name();
+      throw usage_error("unknown subcommand '" + printable(word) + "'" + of + ": valid subcommands are " + names);
+    }
+    at = next;
+  }
 }
 
 }  // namespace stratum::cli

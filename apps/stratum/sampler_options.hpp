@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,5 +50,26 @@ CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::
 /// --threads into `threads` with the one thread rule (resolve_threads: 0 = every core).
 CLI::Option* add_threads_option(CLI::App& command, std::int64_t& threads, const std::string& help);
 CLI::Option* add_threads_option(CLI::App& command, unsigned& threads, const std::string& help);
+
+/// Every number option of `app` and its subcommands (those CLI11 types INT,
+/// UINT or FLOAT) read by the one number syntax of the parameter schema
+/// (stratum/registry/params.hpp) instead of CLI11's: decimal integers only
+/// ("010" is ten; "0x10" and "1e3" are refused, where CLI11 would read octal
+/// and hex), no silent clamp of an integer that does not fit (CLI11 turns
+/// 99999999999999999999 into 2^63 - 1), finite reals only (no "inf", "nan",
+/// 1e999 or an underflow to 0). A refused value is an invalid_argument
+/// naming the option and the text given.
+void read_numbers_strictly(CLI::App& app);
+
+/// A command line that names no command stratum has (exit status 2, as
+/// every bad argument).
+struct usage_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Throws usage_error for the first word of `argv` that names no
+/// subcommand where `app` (or the subcommand before it) needs one, listing
+/// the valid names: CLI11 says only "A subcommand is required".
+void check_subcommand_names(const CLI::App& app, int argc, const char* const* argv);
 
 }  // namespace stratum::cli

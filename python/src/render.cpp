@@ -74,6 +74,7 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
                  py::arg("efficiency") = r.efficiency, py::arg("mse_ratio") = r.mse_ratio,
                  py::arg("efficiency_ratio") = r.efficiency_ratio);
     if (!r.variance_path.empty()) row["variance"] = r.variance_path;
+    row["scene_note"] = prepared.note;  // what the comparison's scene leaves out ("" when nothing)
     row["low_frequency_power"] = r.low_frequency_power;  // NaN where the error has no spectrum
     row["error_spectrum"] = py::dict(py::arg("frequency") = r.error_radial_frequency,
                                      py::arg("power") = r.error_radial_power);

@@ -100,7 +100,7 @@ def _param_text(name, value) -> str:
 def _positive_int(name, value, allowed):
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise InvalidArgument(f"invalid {name} = {value!r}: {allowed}")
-    if value < 1:
+    if value < 1 or value >= 2**64:
         raise InvalidArgument(f"invalid {name} = {value}: {allowed}")
     return int(value)
 
@@ -121,15 +121,17 @@ def points(name: str, n: int | None, d: int = 2, seed: int = 0, randomize: str |
     fast_forward). n=None is allowed only with radius= for a maximal Poisson-disk set.
     Extra keyword arguments are the sampler's parameters (see samplers()).
     """
+    name = _checks.text("name", name)
+    randomize = _checks.text("randomize", randomize, optional=True)
     if n is not None:
-        n = _positive_int("n", n, "must be a positive integer")
+        n = _positive_int("n", n, "must be a positive integer below 2^64")
     d = _positive_int("d", d, "must be a positive integer")
     threads = _checks.threads(threads)
     seed = _checks.seed(seed)
     if d > 2**32 - 1:
         raise InvalidArgument(f"invalid d = {d}: must be below 2^32")
     if radius is not None:
-        radius = float(radius)
+        radius = _checks.real("radius", radius)
     text = {key: _param_text(key, value) for key, value in params.items()}
     if isinstance(start, bool) or not isinstance(start, numbers.Integral) or not 0 <= start < 2**64:
         raise InvalidArgument(f"invalid start = {start!r}: must be an integer in [0, 2^64)")

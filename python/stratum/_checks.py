@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numbers
 
+import numpy as np
+
 from . import _stratum
 from ._stratum import InvalidArgument
 
@@ -27,3 +29,33 @@ def seed(value) -> int:
     if not _is_integer(value):
         raise InvalidArgument(f"invalid seed = {value!r}: {_SEED}")
     return _stratum.parse_seed(str(int(value)))
+
+
+def text(name, value, optional=False) -> str:
+    """A string argument (None too where `optional`: then "")."""
+    if value is None and optional:
+        return ""
+    if not isinstance(value, str):
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be a string" + (" or None" if optional else ""))
+    return value
+
+
+def real(name, value) -> float:
+    """A real number: an int or float (numpy's too), never a string ('0.1'), a bool or a complex number."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be a real number")
+    return float(value)
+
+
+def real_array(name, value, shape_text="an array of real numbers") -> np.ndarray:
+    """`value` as float64, refusing what numpy would cast silently or
+    loosely: complex numbers (the imaginary part dropped with only a
+    warning), strings ("0.5" read as a number) and objects."""
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError):
+        raise InvalidArgument(f"invalid {name} = {type(value).__name__} object: must be {shape_text}") from None
+    if raw.dtype.kind not in "biuf":
+        what = {"c": "complex numbers", "U": "strings", "S": "bytes", "O": "objects"}.get(raw.dtype.kind, str(raw.dtype))
+        raise InvalidArgument(f"invalid {name} = array of {what}: must be {shape_text}")
+    return raw.astype(np.float64, copy=False)

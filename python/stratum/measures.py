@@ -42,10 +42,7 @@ _SCIPY_METHODS = {"CD": "cd", "WD": "wd", "MD": "md", "L2-star": "l2-star"}
 
 def _points(x) -> np.ndarray:
     """x as a C-ordered float64 array of shape (n, d); a 1-D array is n points in one dimension."""
-    try:
-        array = np.asarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InvalidArgument(f"invalid x = {type(x).__name__} object: must be an array of numbers of shape (n, d)") from None
+    array = _checks.real_array("x", x, "an array of numbers of shape (n, d)")
     if array.ndim == 1:
         array = array[:, None]
     if array.ndim != 2:
@@ -140,7 +137,8 @@ def local_discrepancy(x, resolution: int = 64) -> np.ndarray:
     D* itself is ``star_discrepancy_box(x)``. Raises InvalidArgument for d != 2,
     R outside [1, 4096] or a point outside [0, 1].
     """
-    if isinstance(resolution, (bool, np.bool_)) or not isinstance(resolution, (numbers.Integral, np.integer)):
+    if (isinstance(resolution, (bool, np.bool_)) or not isinstance(resolution, (numbers.Integral, np.integer))
+            or not 1 <= resolution <= 4096):
         raise InvalidArgument(f"invalid resolution = {resolution!r}: must be an integer in [1, 4096]")
     return _stratum.local_discrepancy(_points(x), int(resolution))
 

@@ -70,6 +70,9 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
     Raises stratum.InvalidArgument naming the argument at fault."""
     if not isinstance(pixel_centers, bool):
         raise _error("pixel_centers", pixel_centers, "must be True or False")
+    if with_variance and not reference and isinstance(spp, numbers.Integral) and spp == 1:
+        raise _error("with_variance", True, "needs spp >= 2: a pixel's variance is estimated from its samples "
+                     "(this render takes 1)")
     image, variance, _, _, _ = _stratum.render(
         _path("scene", scene), 0 if width is None else _count("width", width, 1, 16384),
         0 if height is None else _count("height", height, 1, 16384), _count("spp", spp),
@@ -97,7 +100,9 @@ def compare(scene=None, builtin: str | None = None, configs: list[dict] | None =
     reference, as `stratum compare`: one dict per configuration with label,
     spp (samples taken), passes, mse, relative_mse, seconds, efficiency
     (1 / (mse × seconds)), mse_ratio and efficiency_ratio (against the
-    first), and variance (the file) with variance_dir.
+    first), variance (the file) with variance_dir, and scene_note: what
+    the comparison's scene leaves out ("" when nothing; without a scene, the
+    built-in Cornell box loses its lens and, but for "time-pattern", its motion).
 
     builtin: a name from comparisons() (default "shadow-rays"); configs: a
     list of dicts with the keys of a configuration file (docs/render.md).

@@ -32,11 +32,7 @@ def _realizations(x) -> np.ndarray:
         shapes = {np.shape(item) for item in x}
         if len(shapes) != 1:
             raise InvalidArgument(f"invalid x = realizations of shapes {sorted(shapes)}: all must have the same (n, d)")
-    try:
-        array = np.asarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InvalidArgument(f"invalid x = {type(x).__name__} object: must be an array of shape (n, d) "
-                              "or a list / array of K such arrays") from None
+    array = _checks.real_array("x", x, "an array of shape (n, d) or a list / array of K such arrays")
     if array.ndim == 1:
         array = array[None, :, None]
     elif array.ndim == 2:
@@ -47,8 +43,8 @@ def _realizations(x) -> np.ndarray:
 
 
 def _positive_int(name, value):
-    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)) or value < 1:
-        raise InvalidArgument(f"invalid {name} = {value!r}: must be a positive integer")
+    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)) or not 1 <= value < 2**31:
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be a positive integer below 2^31")
     return int(value)
 
 
@@ -105,7 +101,7 @@ def pair_correlation(x, radii=None, sigma: float | None = None, threads: int = 1
     (Öztireli & Gross 2012). Defaults: 100 radii up to 2.5 times the densest
     packing distance of N points, sigma a tenth of that distance. g ≈ 1 for a
     uniform random set. Returns a dict: r, g (numpy arrays), sigma."""
-    array = np.asarray(x, dtype=np.float64)
+    array = _checks.real_array("x", x, "an array of shape (n, d)")
     if array.ndim == 1:
         array = array[:, None]
     if array.ndim != 2:

@@ -106,13 +106,15 @@ def integrate(integrand: str, sampler: str = "random", n: int = 1024, d: int | N
     n = _count("n", n, "must be a positive integer")
     runs = _small("runs", runs, "must be in [1, 1000000]", 1, 1000000)
     threads = _checks.threads(threads)
+    integrand, sampler = _checks.text("integrand", integrand), _checks.text("sampler", sampler)
+    randomize = _checks.text("randomize", randomize, optional=True)
     tolerances = []
     for name, value in (("abs_tol", abs_tol), ("rel_tol", rel_tol)):
         if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Real)):
             raise InvalidArgument(f"invalid {name} = {value!r}: must be a real number")
         tolerances.append(None if value is None else float(value))
     max_n = None if max_n is None else _count("max_n", max_n, "must be a positive integer")
-    return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize or "", n, runs,
+    return _stratum.integrate(integrand, _dimension(d), _integrand_params(params), sampler, randomize, n, runs,
                               _seed(seed), threads, float(confidence), tolerances[0], tolerances[1], max_n)
 
 
@@ -140,8 +142,11 @@ def converge(integrand: str, samplers, n=None, runs: int = 32, d: int | None = N
     slope_standard_error only says how straight the line is. Numbers other
     than timings do not depend on `threads`.
     """
+    integrand = _checks.text("integrand", integrand)
     if isinstance(samplers, str):
         samplers = _stratum.split_spec_list(samplers)
+    if not hasattr(samplers, "__iter__"):
+        raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")
     samplers = list(samplers)
     if not samplers or not all(isinstance(s, str) for s in samplers):
         raise InvalidArgument(f"invalid samplers = {samplers!r}: give a list of names (each NAME or NAME:RANDOMIZER)")

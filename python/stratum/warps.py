@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _stratum
+from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
 __all__ = ["warps", "warp", "warp_pdf", "warp_invert"]
@@ -37,11 +37,7 @@ def _params(name: str, given: dict) -> dict:
     spec = {p["name"] for p in known[name]["params"]} if name in known else set()
     params = {}
     for key, value in given.items():
-        try:
-            array = np.asarray(value, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise InvalidArgument(f"invalid {key} = {value!r}: must be a number or an array of numbers") from None
-        params[key] = array.ravel().tolist()
+        params[key] = _checks.real_array(key, value, "a number or an array of numbers").ravel().tolist()
     if "values" in given and "width" in spec and "width" not in given:
         shape = np.shape(given["values"])
         if len(shape) == 1:
@@ -53,14 +49,14 @@ def _params(name: str, given: dict) -> dict:
 
 def warp(name: str, u, **params) -> np.ndarray:
     """Warped points of u (n, input_dim) in [0,1): an (n, output_dim) array."""
-    return _stratum._warp_sample(name, u, _params(name, params))
+    return _stratum._warp_sample(_checks.text("name", name), _checks.real_array("u", u), _params(name, params))
 
 
 def warp_pdf(name: str, p, **params) -> np.ndarray:
     """Density at points p (n, output_dim), per area, solid angle or length: an (n,) array."""
-    return _stratum._warp_pdf(name, p, _params(name, params))
+    return _stratum._warp_pdf(_checks.text("name", name), _checks.real_array("p", p), _params(name, params))
 
 
 def warp_invert(name: str, p, **params) -> np.ndarray:
     """The u in [0,1)^input_dim that warp maps to p: an (n, input_dim) array."""
-    return _stratum._warp_invert(name, p, _params(name, params))
+    return _stratum._warp_invert(_checks.text("name", name), _checks.real_array("p", p), _params(name, params))

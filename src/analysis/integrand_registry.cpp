@@ -2,6 +2,7 @@
 #include <charconv>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "integrand_families.hpp"
 #include "stratum/analysis/integrands.hpp"
@@ -37,6 +38,38 @@ static const Param& integrand_param(const IntegrandInfo& info, const std::string
   refuse_unknown_param(info.name, info.params, key, value_text, "integrand-param");
 }
 
+/// Parameters inside their ranges can still leave double precision
+/// (genz-gaussian a=1e200: a^2 = inf, and inf * 0 = nan at x = u): the
+/// integral and the values at 17 points of the diagonal (t, ..., t), t =
+/// 0, 1/16, ..., 1, must be finite, or the parameters are refused here
+/// rather than giving nan as a result.
+static void check_representable(const IntegrandInfo& info, const IntegrandParams& given, const Integrand& integrand) {
+  std::string given_text;
+  for (const auto& [key, values] : given) {
+    std::string list;
+    for (double v : values) {
+      char buffer[32];
+      list += (list.empty() ? "" : ",") + std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
+    }
+    given_text += (given_text.empty() ? "" : " ") + key + "=" + list;
+  }
+  auto refuse = [&](const std::string& what) {
+    throw invalid_argument(given.empty() ? "integrand" : "integrand-param", given.empty() ? info.name : given_text,
+                           what + ": the parameters leave double precision");
+  };
+  const double exact = integrand.exact();
+  if (!std::isfinite(exact)) refuse(info.name + "'s integral is " + to_message_string(exact));
+  const std::size_t d = integrand.dimension(), count = 17;
+  std::vector<double> points(count * d), values(count);
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < d; ++j) points[i * d + j] = double(i) / 16;
+  integrand.evaluate(points.data(), count, values.data());
+  for (std::size_t i = 0; i < count; ++i)
+    if (!std::isfinite(values[i]))
+      refuse(info.name + " is " + to_message_string(values[i]) + " at x = (" + to_message_string(points[i * d]) +
+             (d > 1 ? ", ..." : "") + ")");
+}
+
 std::unique_ptr<const Integrand> make_integrand(std::string_view name, unsigned d, const IntegrandParams& params) {
   const IntegrandInfo& info = find_integrand(name);
   if (d == 0) d = info.default_dim;
@@ -51,7 +84,9 @@ std::unique_ptr<const Integrand> make_integrand(std::string_view name, unsigned 
     check_param(integrand_param(info, key, text), values);
     filled[key] = values;
   }
-  return info.make(d, filled);
+  auto integrand = info.make(d, filled);
+  check_representable(info, params, *integrand);
+  return integrand;
 }
 
 IntegrandParams parse_integrand_params(std::string_view integrand, const std::map<std::string, std::string>& text) {
@@ -72,6 +107,11 @@ std::vector<double> evaluate_integrand(const Integrand& integrand, const double*
     }
   std::vector<double> values(n);
   integrand.evaluate(points, n, values.data());
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(values[i]))
+      throw invalid_argument("point[" + std::to_string(i) + "]", "row " + std::to_string(i),
+                             "the integrand's value there is " + to_message_string(values[i]) +
+                                 ": not representable in double precision with these parameters");
   return values;
 }
 

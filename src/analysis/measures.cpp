@@ -66,7 +66,20 @@ MeasureResult compute_measure(std::string_view name, const PointView& points, co
   MeasureRequest bound = request;
   bound.values = bind_params(info.name, info.params, request.params, "measure-param");
   if (info.validate) info.validate(points, bound);
-  return info.compute(points, bound);
+  MeasureResult result = info.compute(points, bound);
+  // A measure whose terms leave double precision (products of d factors
+  // that over- or underflow at large d) has no number to report: refused,
+  // never printed as inf or nan.
+  bool finite = std::isfinite(result.value) && (!result.lower || std::isfinite(*result.lower)) &&
+                (!result.upper || std::isfinite(*result.upper));
+  for (const auto& [key, value] : result.extras) finite = finite && std::isfinite(value);
+  if (!finite)
+    throw invalid_argument("d", std::to_string(points.d),
+                           info.name + " of these " + std::to_string(points.n) + " points is " +
+                               to_message_string(result.value) +
+                               ": not representable in double precision at this dimension (its terms over- or "
+                               "underflow)");
+  return result;
 }
 
 }  // namespace stratum::analysis

@@ -5,6 +5,7 @@
 // stratum.qmc.discrepancy reproduces (docs/discrepancy.md).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "measure_families.hpp"
@@ -25,6 +26,12 @@ MeasureResult l2_result(L2Kind kind, const PointView& points, const MeasureReque
   L2Options options;
   options.threads = request.threads;
   if (kind == L2Kind::star) options.algorithm = algorithm_of(request);
+  // Warnock's terms are products of d factors at most 1 (3^-d the first): past
+  // d = 644 they underflow and the result would read 0, silently wrong.
+  if (kind == L2Kind::star && std::pow(3.0, -double(points.d)) < std::numeric_limits<double>::min())
+    throw invalid_argument("d", std::to_string(points.d),
+                           "l2-star's terms (3^-d and products of d factors below 1) underflow double precision "
+                           "past d = 644: the result would read 0");
   const double squared = l2_discrepancy_squared(kind, points, options);
   MeasureResult result;
   result.kind = "exact";

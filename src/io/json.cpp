@@ -1,5 +1,10 @@
 #include "stratum/io/json.hpp"
 
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <utility>
+
 #include "stratum/util/error.hpp"
 
 namespace stratum::io {
@@ -56,10 +61,37 @@ std::size_t too_deep(const std::string& text, std::size_t max_depth) {
   return std::string::npos;
 }
 
+/// The first number of `text` (outside strings) that overflows a double
+/// (1e999): its byte and its text; npos when none does.
+std::pair<std::size_t, std::string> overflowing_number(const std::string& text) {
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '-' || (c >= '0' && c <= '9')) {
+      std::size_t end = i + 1;
+      while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) || text[end] == '.' ||
+                                   text[end] == 'e' || text[end] == 'E' || text[end] == '+' || text[end] == '-'))
+        ++end;
+      const std::string number = text.substr(i, end - i);
+      if (std::isinf(std::strtod(number.c_str(), nullptr))) return {i, number};
+      i = end - 1;
+    }
+  }
+  return {std::string::npos, ""};
+}
+
 }  // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& argument, const std::string& origin,
                           std::size_t max_depth) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw invalid_argument(argument, origin, text.empty() ? "is empty: it must hold a JSON document"
+                                                          : "holds only white space: it must hold a JSON document");
   const std::size_t deep = too_deep(text, max_depth);
   if (deep != std::string::npos)
     throw invalid_argument(argument, origin,
@@ -76,7 +108,12 @@ nlohmann::json parse_json(const std::string& text, const std::string& argument, 
     const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
     throw invalid_argument(argument, origin, "is not valid JSON at " + place(text, byte) + ": " + reason);
   } catch (const nlohmann::json::out_of_range&) {
-    throw invalid_argument(argument, origin, "has a number that is not finite in double precision");
+    const auto [at, number] = overflowing_number(text);
+    if (at == std::string::npos)
+      throw invalid_argument(argument, origin, "has a number that is not finite in double precision");
+    throw invalid_argument(argument, origin,
+                           "has the number " + (number.size() > 40 ? number.substr(0, 37) + "..." : number) + " at " +
+                               place(text, at) + ", which is not finite in double precision");
   }
 }
 

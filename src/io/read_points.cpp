@@ -52,6 +52,7 @@ std::vector<std::uint64_t> parse_shape(const std::string& text) {
   while (i + 1 < text.size()) {
     while (i + 1 < text.size() && (text[i] == ' ' || text[i] == ',')) ++i;
     if (i + 1 >= text.size()) break;
+    if (text[i] < '0' || text[i] > '9') return {};  // strtoull would take "-16" as 2^64 - 16
     char* end = nullptr;
     errno = 0;
     const unsigned long long value = std::strtoull(text.c_str() + i, &end, 10);
@@ -83,13 +84,21 @@ PointSet read_npy_strict(std::ifstream& in, const std::filesystem::path& path) {
   std::string header(header_length, '\0');
   in.read(header.data(), static_cast<std::streamsize>(header_length));
   if (!in) bad_input(path, "has a truncated .npy header");
+  // Parts of the header shown in a message: one line, no raw bytes, and
+  // "(none)" for a key the header lacks.
+  auto shown = [&](const char* key) {
+    const std::string value = header_value(header, key);
+    return value.empty() ? std::string("(none)") : printable(value.substr(0, 80));
+  };
   const std::string descr = header_value(header, "descr");
-  if (descr != "'<f8'") bad_input(path, fmt::format("holds dtype {}, allowed '<f8' (little-endian float64)", descr));
+  if (descr != "'<f8'")
+    bad_input(path, fmt::format("holds dtype {}, allowed '<f8' (little-endian float64)", shown("descr")));
   if (header_value(header, "fortran_order") != "False")
-    bad_input(path, "is in Fortran order, allowed: C order (numpy.ascontiguousarray)");
+    bad_input(path, fmt::format("is in Fortran order (fortran_order {}), allowed: C order (numpy.ascontiguousarray)",
+                                shown("fortran_order")));
   const std::vector<std::uint64_t> shape = parse_shape(header_value(header, "shape"));
   if (shape.empty() || shape.size() > 2)
-    bad_input(path, fmt::format("has shape {}, allowed (n, d) or (n,)", header_value(header, "shape")));
+    bad_input(path, fmt::format("has shape {}, allowed (n, d) or (n,) of non-negative integers", shown("shape")));
   const std::uint64_t n = shape[0], d = shape.size() == 2 ? shape[1] : 1;
   if (n == 0 || d == 0) bad_input(path, fmt::format("holds no points (shape ({}, {}))", n, d));
   const std::uint64_t body = file_size - offset - header_length;
@@ -145,6 +154,7 @@ PointSet read_text_strict(std::ifstream& in, const std::filesystem::path& path, 
   std::string line;
   while (std::getline(in, line)) {
     ++line_number;
+    if (line_number == 1 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);  // a UTF-8 byte order mark
     // Blank is what split_fields splits at (a line of '\v' or '\f' too: it
     // holds no field, and once counted as a point of 0 values).
     const auto first = std::find_if(line.begin(), line.end(), [](unsigned char c) { return !std::isspace(c); });
@@ -163,10 +173,11 @@ PointSet read_text_strict(std::ifstream& in, const std::filesystem::path& path, 
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
       if (field.empty() || end != field.c_str() + field.size())
-        bad_input(path, fmt::format("line {}, column {} is '{}': not a number", line_number, column + 1, field));
+        bad_input(path, fmt::format("line {}, column {} is '{}': not a number", line_number, column + 1,
+                                    printable(field.substr(0, 80))));
       if (!std::isfinite(value))
         bad_input(path, fmt::format("line {}, column {} is '{}': coordinates must be finite numbers", line_number,
-                                    column + 1, field));
+                                    column + 1, printable(field.substr(0, 80))));
       values.push_back(value);
     }
     ++n;
@@ -181,6 +192,29 @@ PointSet read_text_strict(std::ifstream& in, const std::filesystem::path& path, 
 }
 
 }  // namespace
+
+std::string point_location(const std::filesystem::path& path, std::size_t row) {
+  if (path.extension() == ".npy") return fmt::format("row {}", row);
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::size_t line_number = 0, points = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line_number == 1 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
+    const auto first = std::find_if(line.begin(), line.end(), [](unsigned char c) { return !std::isspace(c); });
+    if (first == line.end() || *first == '#') continue;
+    if (points++ == row) return fmt::format("line {}", line_number);
+  }
+  return fmt::format("point {}", row);
+}
+
+void check_unit_cube(const PointSet& points, const std::filesystem::path& path) {
+  for (std::size_t i = 0; i < points.n; ++i)
+    for (std::size_t j = 0; j < points.d; ++j)
+      if (!(points(i, j) >= 0 && points(i, j) <= 1))
+        bad_input(path, fmt::format("{}, column {} is {}: coordinates must be in [0, 1]", point_location(path, i),
+                                    j + 1, points(i, j)));
+}
 
 PointSet read_points_strict(const std::filesystem::path& path) {
   std::error_code ec;

@@ -112,6 +112,10 @@ for job in json.load(open(sys.argv[1])):
         runpy.run_path(job["script"], run_name="__main__")
     except SystemExit as e:
         failed += e.code not in (0, None)
+    except OSError as e:  # a full disk, a lost folder: the user's problem, said in one line, not a traceback
+        print("stratum: error: cannot write the figure %s: %s" % (job.get("target", job["out"]), e.strerror or e),
+              file=sys.stderr)
+        failed += 1
     except Exception:
         traceback.print_exc()
         failed += 1
@@ -192,7 +196,8 @@ void write_plots(const std::vector<PlotJob>& jobs, unsigned processes) {
   for (unsigned p = 0; p < processes; ++p) {
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t i = p; i < staged.size(); i += processes)
-      list.push_back({{"script", staged[i]->code.path}, {"data", staged[i]->json.path}, {"out", staged[i]->figure->staging()}});
+      list.push_back({{"script", staged[i]->code.path}, {"data", staged[i]->json.path}, {"out", staged[i]->figure->staging()},
+                      {"target", staged[i]->target}});
     lists[p].path = make_temporary(temp_dir + "/stratum-plot-", ".json");
     if (lists[p].path.empty()) throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);
     write_temporary(lists[p].path, list.dump());

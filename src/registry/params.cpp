@@ -59,7 +59,8 @@ std::string_view type_name(ParamType type) {
 static std::string bound_text(double value) {
   if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
   int exponent = 0;
-  if (value >= 0x1p32 && std::frexp(value, &exponent) == 0.5) return "2^" + std::to_string(exponent - 1);
+  if (std::fabs(value) >= 0x1p32 && std::fabs(std::frexp(value, &exponent)) == 0.5)
+    return (value < 0 ? "-2^" : "2^") + std::to_string(exponent - 1);
   if (value == std::floor(value) && std::fabs(value) < 1e18) return std::to_string(static_cast<long long>(value));
   return to_message_string(value);
 }

@@ -1,7 +1,9 @@
 #include "stratum/warp_registry.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "stratum/util/error.hpp"
 #include "warp_families.hpp"
@@ -36,10 +38,43 @@ static const Param& warp_param(const WarpInfo& info, const std::string& key, con
   refuse_unknown_param(info.name, info.params, key, value_text, "warp-param");
 }
 
+/// Shortest text that reads back as each value ("1e-300", not 1.0000000000000001e-300).
 static std::string numbers_text(const std::vector<double>& values) {
   std::string text;
-  for (double v : values) text += (text.empty() ? "" : ",") + to_message_string(v);
+  for (double v : values) {
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+    text += (text.empty() ? "" : ",") + std::string(buffer, end);
+  }
   return text;
+}
+
+/// Probes a built warp at the centres of a 4 x 4 (or 4) grid of u: every
+/// point must be finite and its pdf finite and positive. Parameters that
+/// pass their ranges can still leave double precision (rate=1e-320 puts
+/// the points at inf); refused here rather than printed as results.
+static void check_density(const WarpInfo& info, const WarpParams& given, const Warp& warp) {
+  const unsigned in = warp.input_dim(), out = warp.output_dim();
+  const std::size_t count = in == 1 ? 4 : 16;
+  std::vector<double> u(count * in), p(count * out), pdf(count);
+  for (std::size_t i = 0; i < count; ++i)
+    for (unsigned k = 0; k < in; ++k) u[i * in + k] = (double((k == 0 ? i : i / 4) % 4) + 0.5) / 4;
+  warp.sample(u.data(), count, p.data());
+  warp.pdf(p.data(), count, pdf.data());
+  for (std::size_t i = 0; i < count; ++i) {
+    bool finite = std::isfinite(pdf[i]) && pdf[i] > 0;
+    for (unsigned k = 0; k < out; ++k) finite = finite && std::isfinite(p[i * out + k]);
+    if (finite) continue;
+    std::string given_text, point_text, u_text;
+    for (const auto& [key, value] : given) given_text += (given_text.empty() ? "" : " ") + key + "=" + numbers_text(value);
+    for (unsigned k = 0; k < out; ++k) point_text += (k ? ", " : "") + to_message_string(p[i * out + k]);
+    for (unsigned k = 0; k < in; ++k) u_text += (k ? ", " : "") + to_message_string(u[i * in + k]);
+    throw invalid_argument(given.empty() ? "map" : "warp-param", given.empty() ? info.name : given_text,
+                           info.name + " maps u = (" + u_text + ") to (" + point_text + ") with pdf " +
+                               to_message_string(pdf[i]) +
+                               ": the parameters leave double precision (a point must be finite, its pdf finite "
+                               "and positive)");
+  }
 }
 
 std::unique_ptr<const Warp> make_warp(std::string_view name, const WarpParams& params) {
@@ -51,7 +86,9 @@ std::unique_ptr<const Warp> make_warp(std::string_view name, const WarpParams& p
     require(!param.default_value.empty(), param.name, "(missing)", info.name + " needs it: " + param.description);
     filled[param.name] = as_reals(parse_param(param, param.default_value));
   }
-  return info.make(filled);
+  auto warp = info.make(filled);
+  check_density(info, params, *warp);
+  return warp;
 }
 
 WarpParams parse_warp_params(std::string_view name, const std::map<std::string, std::string>& text) {
@@ -92,6 +129,24 @@ std::vector<double> warp_invert(const Warp& warp, const double* p, std::size_t n
   check_rows("p", p, n, warp.output_dim(), false);
   std::vector<double> out(n * warp.input_dim());
   warp.invert(p, n, out.data());
+  // A point outside the warp's domain (where its pdf is 0) has no u: the
+  // inverses clamp, so it would come back as a u that maps elsewhere.
+  const unsigned in = warp.input_dim(), dim = warp.output_dim();
+  std::vector<double> density(n);
+  warp.pdf(p, n, density.data());
+  auto refuse = [&](std::size_t i, const std::string& why) {
+    std::string point;
+    for (unsigned j = 0; j < dim; ++j) point += (j ? ", " : "") + to_message_string(p[i * dim + j]);
+    throw invalid_argument("p[" + std::to_string(i) + "]", "(" + point + ")", "is outside the warp's domain: " + why);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(density[i] > 0) || !std::isfinite(density[i]))
+      refuse(i, "its pdf there is " + to_message_string(density[i]) + ", so no u maps to it");
+    for (unsigned k = 0; k < in; ++k)
+      if (!(out[i * in + k] >= 0.0 && out[i * in + k] <= 1.0))
+        refuse(i, "its inverse u[" + std::to_string(k) + "] = " + to_message_string(out[i * in + k]) +
+                      " is not in [0, 1]");
+  }
   return out;
 }
 

@@ -67,6 +67,9 @@ ComparisonScene comparison_scene(const std::string& path, bool keep_motion, int 
     if (!keep_motion)
       for (auto& shape : result.scene.shapes) shape.motion = {};
     result.scene.name += keep_motion ? "-pinhole" : "-static";
+    result.note = std::string("the built-in Cornell box without its lens (a pinhole camera)") +
+                  (keep_motion ? "" : " and without its motion (static shapes)") +
+                  ": each comparison isolates its own integral; give a SCENE to keep them";
   } else {
     result.scene = load_scene(path);
   }

@@ -30,6 +30,8 @@ void validate_settings(const RenderSettings& s) {
   require(s.threads >= 1 && s.threads <= 1024, "threads", s.threads, "must be in [1, 1024]");
   require(std::isfinite(s.time_limit) && s.time_limit >= 0, "time-limit", s.time_limit, "must be >= 0 seconds");
   require(s.sampler.spp >= 1, "spp", s.sampler.spp, "must be a positive integer");
+  // More passes than spp are clamped to spp (a pass takes at least one sample); 0 passes would render nothing.
+  require(s.passes >= 1 && s.passes <= (1u << 24), "passes", s.passes, "must be in [1, 2^24] (at most spp are used)");
   const PixelSampler sampler(s.sampler);  // validates sampler, randomizer, spp and time pattern
   try {  // the shadow-ray arrays: n = light_samples points of the sampler (jittered needs n = k²)
     sampler.draw_for_test(s.light_samples, 0);

@@ -84,7 +84,7 @@ m = d["measures"][0]; assert m["name"] == "l2-star" and m["lower"] is None and m
 
 # Bad input.
 printf '0.1 0.2\n0.3 1.5\n' >"$tmp/out_of_cube.txt"
-expect_error "point\[1\]\[1\] = 1.5" discrepancy "$tmp/out_of_cube.txt" --measure cd
+expect_error "out_of_cube.txt: line 2, column 2 is 1.5: coordinates must be in \[0, 1\]" discrepancy "$tmp/out_of_cube.txt" --measure cd
 printf '0.1 0.2\n0.3 nan\n' >"$tmp/nan.txt"
 expect_error "line 2, column 2 is 'nan'" discrepancy "$tmp/nan.txt" --measure cd
 printf '0.1,0.2\n0.3,inf\n' >"$tmp/inf.csv"

@@ -121,7 +121,7 @@ bad "invalid star = nan" koksma-hlawka --sampler halton -n 16 --star nan
 bad "star" koksma-hlawka --sampler halton -n 16 --star abc
 bad "invalid n = 1" koksma-hlawka "$tmp/one.txt"
 bad "empty" koksma-hlawka "$tmp/empty.txt"
-bad "invalid point\[0\]\[1\] = 1.5" koksma-hlawka "$tmp/out.txt"
+bad "out.txt: line 1, column 2 is 1.5: coordinates must be in \[0, 1\]" koksma-hlawka "$tmp/out.txt"
 bad "input" koksma-hlawka
 bad "invalid --list" koksma-hlawka --list "$tmp/one.txt"
 bad "invalid --list" koksma-hlawka --list --star 0.1

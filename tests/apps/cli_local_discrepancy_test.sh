@@ -81,7 +81,7 @@ printf '# nothing\n' >"$tmp/empty.txt"; printf '0.5 0.5\n' >"$tmp/one.txt"; prin
 expect_error "invalid input = .*empty.txt: holds no points" local-discrepancy "$tmp/empty.txt" -o "$tmp/bad.npy"
 expect_error "invalid n = 1" local-discrepancy "$tmp/one.txt" -o "$tmp/bad.npy"
 expect_error "invalid n = 0" local-discrepancy --sampler halton -n 0 -o "$tmp/bad.npy"
-expect_error "invalid point\[1\]\[1\] = -0.1" local-discrepancy "$tmp/out.txt" -o "$tmp/bad.npy"
+expect_error "out.txt: line 2, column 2 is -0.1: coordinates must be in \[0, 1\]" local-discrepancy "$tmp/out.txt" -o "$tmp/bad.npy"
 expect_error "invalid d = 1" local-discrepancy --sampler halton -n 16 -d 1 --box -o "$tmp/bad.npy"
 # The box sweep is O(N^2): --box takes at most 20000 points, as the star-box measure does.
 expect_error "invalid n = 20001: .*at most 20000" local-discrepancy --sampler random -n 20001 --box -o "$tmp/bad.npy"

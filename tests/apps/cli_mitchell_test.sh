@@ -38,7 +38,7 @@ expect_error "invalid lines = many" discrepancy --sampler random -n 10 -d 2 --me
 expect_error "invalid seed = -1" discrepancy --sampler random -n 10 -d 2 --measure edge-random --measure-param seed=-1
 expect_error "invalid measure-param = lines=5: edge takes no parameters" discrepancy --sampler random -n 10 -d 2 --measure edge --measure-param lines=5
 printf '0.5 0.5\n0.2 1.5\n' >"$tmp/outside.txt"
-expect_error "point\[1\]\[1\]" discrepancy "$tmp/outside.txt" --measure edge
+expect_error "outside.txt: line 2, column 2 is 1.5: coordinates must be in \[0, 1\]" discrepancy "$tmp/outside.txt" --measure edge
 
 # The study: text table, JSON, determinism across threads, the figure.
 "$stratum" study mitchell --counts 16,100 --realizations 4 --lines 500 >"$tmp/table.txt" && ok || fail "study text"

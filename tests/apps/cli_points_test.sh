@@ -50,7 +50,7 @@ expect_error "invalid start = 1: jittered is a finite pattern" points -s jittere
 expect_error "halton" points --sampler nosuch -n 4
 expect_error "invalid n = 0" points --sampler halton -n 0
 expect_error "invalid n = -3" points --sampler halton -n -3
-expect_error "-n = abc: not a valid number" points --sampler halton -n abc
+expect_error "invalid n = abc: must be an integer" points --sampler halton -n abc
 expect_error "invalid d = 0" points --sampler halton -n 4 -d 0
 expect_error "invalid d = 2000" points --sampler halton -n 4 -d 2000
 expect_error "needs 21.3 PiB for 1000000000000000 x 3 points of random, " points --sampler random -n 1000000000000000 -d 3

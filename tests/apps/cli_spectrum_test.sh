@@ -25,21 +25,21 @@ assert d["radial"]["frequency"][7] == 1.0 and len(d["radial"]["power"]) == k
 PY
 
 # Text output: the figures and one row per ring.
-"$stratum" spectrum --sampler jittered -n 256 -r 4 -k 24 >"$tmp/text" && ok || fail "text spectrum"
+"$stratum" spectrum --sampler jittered -n 256 --realizations 4 -k 24 >"$tmp/text" && ok || fail "text spectrum"
 grep -q '^effective_nyquist ' "$tmp/text" && grep -q '^oscillation ' "$tmp/text" && ok || fail "text figures: $(head -4 "$tmp/text")"
 rows=$(grep -c '^  ' "$tmp/text")
 [ "$rows" = 24 ] && ok || fail "24 ring rows, got $rows"
 
 # Same numbers for any thread count; realizations from seeds seed, seed+1, ...
-a=$("$stratum" spectrum --sampler random -n 500 -r 3 -k 30 --threads 1 --json | md5sum)
-b=$("$stratum" spectrum --sampler random -n 500 -r 3 -k 30 --threads 2 --json | md5sum)
+a=$("$stratum" spectrum --sampler random -n 500 --realizations 3 -k 30 --threads 1 --json | md5sum)
+b=$("$stratum" spectrum --sampler random -n 500 --realizations 3 -k 30 --threads 2 --json | md5sum)
 [ "$a" = "$b" ] && ok || fail "threads change the spectrum"
 
 # Files as realizations; the same points as the sampler gives the same spectrum.
 "$stratum" points --sampler random -n 300 -d 2 --seed 5 -o "$tmp/r0.txt" && \
 "$stratum" points --sampler random -n 300 -d 2 --seed 6 -o "$tmp/r1.txt" && ok || fail "write point files"
 "$stratum" spectrum "$tmp/r0.txt" "$tmp/r1.txt" -k 12 --json >"$tmp/files.json" && ok || fail "spectrum of files"
-"$stratum" spectrum --sampler random -n 300 --seed 5 -r 2 -k 12 --json >"$tmp/sampler.json" && ok || fail "sampler twin"
+"$stratum" spectrum --sampler random -n 300 --seed 5 --realizations 2 -k 12 --json >"$tmp/sampler.json" && ok || fail "sampler twin"
 $py - "$tmp/files.json" "$tmp/sampler.json" <<'PY' && ok || fail "files equal sampler realizations"
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:3])
@@ -80,7 +80,7 @@ expect_error "invalid max-frequency = 0" spectrum --sampler random -n 100 -k 0
 expect_error "invalid max-frequency = -5" spectrum --sampler random -n 100 -k -5
 expect_error "at most 2^25" spectrum --sampler random -n 100 -k 5000
 expect_error "invalid n = 1" spectrum --sampler random -n 1
-expect_error "invalid realizations = 0" spectrum --sampler random -n 100 -r 0
+expect_error "invalid realizations = 0" spectrum --sampler random -n 100 --realizations 0
 expect_error "invalid input" spectrum
 expect_error "sampler" spectrum --sampler nosuch -n 10
 "$stratum" points --sampler random -n 20 -d 3 -o "$tmp/p3.txt"
@@ -88,7 +88,7 @@ expect_error "invalid d = 3" spectrum "$tmp/p3.txt"
 "$stratum" points --sampler random -n 21 -d 2 -o "$tmp/r21.txt"
 expect_error "invalid n of realization 1 = 21" spectrum "$tmp/r0.txt" "$tmp/r21.txt"
 printf '0.1 0.2\n0.3 1.5\n' >"$tmp/out.txt"
-expect_error "point\[1\]\[1\]" spectrum "$tmp/out.txt"
+expect_error "out.txt: line 2, column 2 is 1.5: coordinates must be in \[0, 1\]" spectrum "$tmp/out.txt"
 expect_error "invalid max-frequency = 0" spectrum --sampler random -n 100 -k 0 -o "$tmp/bad.png"
 [ ! -e "$tmp/bad.png" ] && ok || fail "a failed run left bad.png"
 

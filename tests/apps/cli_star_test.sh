@@ -62,7 +62,7 @@ expect_error "invalid max_boxes = 0" discrepancy --sampler random -n 10 --measur
 printf '0.5 0.5\n' >"$tmp/one.txt"
 expect_error "invalid n = 1" discrepancy "$tmp/one.txt" --measure star
 printf '0.5 0.5\n0.25 1.5\n' >"$tmp/out.txt"
-expect_error "point\[1\]\[1\]" discrepancy "$tmp/out.txt" --measure star
+expect_error "out.txt: line 2, column 2 is 1.5: coordinates must be in \[0, 1\]" discrepancy "$tmp/out.txt" --measure star
 printf '0.5 nan\n0.25 0.5\n' >"$tmp/nan.txt"
 expect_error "invalid" discrepancy "$tmp/nan.txt" --measure star
 

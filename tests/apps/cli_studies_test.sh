@@ -96,7 +96,7 @@ expect_error "invalid runs = -2" study importance --runs -2
 expect_error "invalid samples = 1" study importance --samples 1
 expect_error "invalid size = -1" study importance --sizes 1,-1
 expect_error "invalid distance = 0" study importance --distances 0
-expect_error "not a valid number" study importance --sizes abc
+expect_error "invalid sizes = abc: must be a finite real" study importance --sizes abc
 expect_error "plot" study importance --runs 2 --samples 100 --plot /nonexistent/i.png
 [ ! -e /nonexistent/i.png ] && ok || fail "partial plot left"
 if [ "$(id -u)" != 0 ]; then

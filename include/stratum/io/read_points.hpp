@@ -5,6 +5,7 @@
 /// or the row and column (.npy) at fault. The lenient reader in points.hpp
 /// stays as it is for round trips of files stratum wrote itself.
 #include <filesystem>
+#include <string>
 
 #include "stratum/registry.hpp"  // PointSet
 
@@ -22,5 +23,15 @@ namespace stratum::io {
 /// number (line and column), NaN or ±Inf (line or row, and column), a bad or
 /// truncated .npy header or body. Range checks ([0, 1]) are the measures'.
 PointSet read_points_strict(const std::filesystem::path& path);
+
+/// Where point `row` (from 0) of a file read_points_strict read is, for a
+/// message: "line L" of a text file (counting the blank and '#' lines it
+/// skipped), "row R" of a .npy file.
+std::string point_location(const std::filesystem::path& path, std::size_t row);
+
+/// Throws invalid_argument naming `path`, the line (point_location) and the
+/// column of the first coordinate of `points` outside [0, 1], as a measure
+/// needs them: the measure's own message could name only the point's index.
+void check_unit_cube(const PointSet& points, const std::filesystem::path& path);
 
 }  // namespace stratum::io

@@ -146,6 +146,9 @@ std::string scene_fingerprint(const Scene& scene);
 struct ComparisonScene {
   Scene scene;
   std::string key;
+  /// What the comparison's scene leaves out of the scene it was made from,
+  /// for its output ("" when nothing): the built-in box's lens, its motion.
+  std::string note;
 };
 ComparisonScene comparison_scene(const std::string& path, bool keep_motion, int width, int height);
 
