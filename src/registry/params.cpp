@@ -146,6 +146,29 @@ static bool parse_real_text(std::string_view text, double& value) {
   return error == std::errc() && ptr == end && std::isfinite(value) && std::fpclassify(value) != FP_SUBNORMAL;
 }
 
+/// A number too small for a double's full precision (1e-320) or so small it
+/// reads as 0 (1e-400): said as such, since "must be in (0, inf)" would not
+/// explain why 1e-320 is refused.
+static bool underflows(std::string_view text) {
+  double value = 0;
+  const auto [ptr, error] = std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
+  if (ptr != text.data() + text.size()) return false;
+  if (error == std::errc()) return std::fpclassify(value) == FP_SUBNORMAL;
+  if (error != std::errc::result_out_of_range) return false;
+  // Out of range either way (from_chars leaves the value unset): too small
+  // when the exponent is negative, or, without one, when the digits start
+  // after the point ("0.000…01"); too large otherwise.
+  const std::size_t e = text.find_first_of("eE");
+  if (e != std::string_view::npos) return e + 1 < text.size() && text[e + 1] == '-';
+  const std::string_view digits = text.substr(text[0] == '-' ? 1 : 0);
+  return digits.starts_with("0.") || digits.starts_with(".");
+}
+
+[[noreturn]] static void refuse_underflow(const std::string& name, std::string_view text) {
+  throw invalid_argument(name, text, "is below the smallest normal double, 2.2e-308, so it would not read back as "
+                                     "written: give 0 or a larger value");
+}
+
 /// Items between separators; a list whose separator is not ',' takes ','
 /// too ("4x8" or "4,8"), as lists of numbers are written everywhere else.
 static std::vector<std::string_view> split(std::string_view text, char separator) {
@@ -176,6 +199,7 @@ ParamValue parse_param(const Param& param, std::string_view text) {
     }
     case ParamType::real: {
       double value = 0;
+      if (underflows(text)) refuse_underflow(param.name, text);
       if (!parse_real_text(text, value) || !param.range.contains(value)) refuse(param, text);
       return value;
     }
@@ -196,6 +220,7 @@ ParamValue parse_param(const Param& param, std::string_view text) {
       std::vector<double> values;
       for (std::string_view item : split(text, param.separator)) {
         double value = 0;
+        if (underflows(item)) refuse_underflow(param.name + "[" + std::to_string(values.size()) + "]", item);
         if (!parse_real_text(item, value) || !param.range.contains(value)) refuse_element(param, values.size(), item);
         values.push_back(value);
       }

@@ -76,7 +76,7 @@ void screen_space_error(SectionContext& context, Section& section) {
   const int side = context.quick() ? 64 : 96;  // the full report's render size (render_scale)
   render::Scene scene = render::penumbra_scene();
   scene.camera.width = scene.camera.height = side;
-  const render::ComparisonScene penumbra{scene, render::scene_fingerprint(scene)};
+  const render::ComparisonScene penumbra{scene, render::scene_fingerprint(scene), ""};
   std::vector<render::CompareConfig> configs;
   for (std::uint32_t spp : {1u, 4u})
     for (const char* sampler : {"sobol", "zsobol"}) {

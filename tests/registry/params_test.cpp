@@ -71,6 +71,10 @@ TEST(ParamParser, RealsThatDoNotSurviveReadingAreRefused) {
   // Overflow to inf, underflow to a subnormal or 0, and the non-finite words.
   for (const char* bad : {"1e999", "-1e999", "1e-320", "-1e-320", "1e-400", "inf", "-inf", "nan", "infinity", "0x1p3", "1.5.2", "1e"})
     EXPECT_NE(parse_error(any, bad), "") << "'" << bad << "' was accepted";
+  EXPECT_EQ(parse_error(any, "1e-320"),
+            "invalid x = 1e-320: is below the smallest normal double, 2.2e-308, so it would not read back as written: "
+            "give 0 or a larger value");
+  EXPECT_EQ(parse_error(params::reals("w", "", "", any_real()), "1,1e-400").substr(0, 23), "invalid w[1] = 1e-400: ");
   EXPECT_EQ(std::get<double>(parse_param(any, "-2.5e-3")), -2.5e-3);
   EXPECT_EQ(std::get<double>(parse_param(any, "1.7976931348623157e308")), std::numeric_limits<double>::max());
 }
