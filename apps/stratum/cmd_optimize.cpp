@@ -1,5 +1,5 @@
-/// `stratum optimize blue-noise`: sobol-bn's key tile (analysis/blue_noise.hpp),
-/// written as a key file (sequences/sobol_bn.hpp) that `--param table=FILE`
+/// `stratum optimize blue-noise`: sobol-bn's rank tile (analysis/blue_noise.hpp),
+/// written as a rank file (sequences/sobol_bn.hpp) that `--param table=FILE`
 /// reads; the committed default was made by this command (docs/blue-noise.md).
 #include <fmt/core.h>
 
@@ -39,14 +39,14 @@ void run_blue_noise(const OptimizeOptions& o) {
   file.prepare();  // refused before the work
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::BlueNoisePairReport> report;
-  const BlueNoiseKeys table = analysis::optimize_blue_noise(options, &report, [&](std::uint32_t pair, std::uint32_t pairs) {
+  const BlueNoiseTable table = analysis::optimize_blue_noise(options, &report, [&](std::uint32_t pair, std::uint32_t pairs) {
     if (!o.quiet) fmt::print(stderr, "optimizing pair {} of {}\n", pair + 1, pairs);
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string bytes = serialize_blue_noise_keys(table);
+  const std::string bytes = serialize_blue_noise_table(table);
   file.write([&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
   file.commit();
-  fmt::print("# blue-noise key tile {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes in {:.1f} s\n",
+  fmt::print("# blue-noise rank tile {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes in {:.1f} s\n",
              table.size, table.size, table.dims, table.seed, table.max_spp, table.integrands, table.sweeps, bytes.size(),
              seconds);
   fmt::print("# energy: blurred error over the test integrands, white = 1\n");
@@ -60,22 +60,22 @@ void run_blue_noise(const OptimizeOptions& o) {
 }  // namespace
 
 void add_optimize_command(CLI::App& app) {
-  auto* optimize = app.add_subcommand("optimize", "Generate optimized tables: blue-noise (sobol-bn's key tile)");
+  auto* optimize = app.add_subcommand("optimize", "Generate optimized tables: blue-noise (sobol-bn's rank tile)");
   optimize->require_subcommand(1);
   auto o = std::make_shared<OptimizeOptions>();
   auto* command = optimize->add_subcommand(
       "blue-noise",
-      "sobol-bn's per-pixel scrambling keys, swapped between pixels so that the blurred error of test heavisides is "
+      "sobol-bn's per-pixel ranks (which block of the shared Owen-scrambled Sobol' sequence a pixel takes), swapped between pixels so that the blurred error of test heavisides is "
       "small (Heitz et al. 2019; Belcour & Heitz 2021); deterministic: the same options give the same bytes");
-  command->add_option("--size", o->size, "tile side in pixels, [16, 512]")->capture_default_str();
+  command->add_option("--size", o->size, "tile side in pixels, a power of 2 in [16, 256]")->capture_default_str();
   command->add_option("--dims", o->dims, "dimensions covered (even, [2, 64]; pairs optimized one by one)")
       ->capture_default_str();
-  command->add_option("--seed", o->seed, "seed of the keys, test integrands and swaps")->capture_default_str();
+  command->add_option("--seed", o->seed, "seed of the ranks, test integrands and swaps")->capture_default_str();
   command->add_option("--max-spp", o->max_spp, "optimize for spp = 1, 2, 4, ..., this (a power of 2, <= 256)")
       ->capture_default_str();
   command->add_option("--integrands", o->integrands, "test heavisides per spp, [1, 1024]")->capture_default_str();
   command->add_option("--sweeps", o->sweeps, "swap proposals per pixel, [0, 100000]")->capture_default_str();
-  command->add_option("-o,--output", o->output, "the key file to write")->required();
+  command->add_option("-o,--output", o->output, "the rank file to write")->required();
   command->add_flag("-q,--quiet", o->quiet, "no progress on stderr");
   command->callback([o] { run_blue_noise(*o); });
 }

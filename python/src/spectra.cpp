@@ -53,7 +53,7 @@ py::tuple optimize_blue_noise(std::uint32_t size, std::uint32_t dims, std::uint6
   std::string bytes;
   {
     py::gil_scoped_release release;
-    bytes = stratum::serialize_blue_noise_keys(sa::optimize_blue_noise(o, &report));
+    bytes = stratum::serialize_blue_noise_table(sa::optimize_blue_noise(o, &report));
   }
   py::list pairs;
   for (const auto& r : report)

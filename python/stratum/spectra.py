@@ -84,10 +84,11 @@ def _count(name, value, low, high):
 def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 1, max_spp: int = 16, integrands: int = 32,
                         sweeps: int = 256, output=None) -> dict:
     """sobol-bn's key tile (docs/blue-noise.md), as ``stratum optimize
-    blue-noise``: per-pixel scrambling keys swapped between pixels so that the
+    blue-noise``: per-pixel ranks (which block of the shared Owen-scrambled
+    Sobol' sequence a pixel takes) swapped between pixels so that the
     blurred error of test heavisides at spp = 1, 2, ..., max_spp is small.
     Deterministic: the same arguments give the same bytes as the CLI. Returns
-    ``keys`` (uint16 array (size, size, dims)), ``bytes`` (the key file) and
+    ``ranks`` (uint16 array (size, size, dims // 2)), ``bytes`` (the file) and
     ``pairs`` (per dimension pair: initial and final energy, white = 1, and
     the swaps accepted and proposed); with ``output`` the file is written
     there (whole or not at all), for ``stratum.points("sobol-bn", ...,
@@ -110,8 +111,8 @@ def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 1, max_spp: 
             if os.path.exists(staging):
                 os.remove(staging)
             raise
-    keys = np.frombuffer(data, dtype="<u2", offset=36).reshape(size, size, dims)
-    return {"keys": keys, "bytes": data, "pairs": pairs}
+    ranks = np.frombuffer(data, dtype="<u2", offset=36).reshape(size, size, dims // 2)
+    return {"ranks": ranks, "bytes": data, "pairs": pairs}
 
 
 def spectrum(x, max_frequency: int | None = None, threads: int = 1) -> dict:

@@ -18,7 +18,7 @@
 namespace stratum::analysis {
 namespace {
 
-constexpr std::uint64_t tag_keys = 0x626e'6b65'7973ULL;       // "bnkeys"
+constexpr std::uint64_t tag_ranks = 0x626e'7261'6e6bULL;      // "bnrank"
 constexpr std::uint64_t tag_integrand = 0x626e'696e'74ULL;    // "bnint"
 constexpr std::uint64_t tag_proposal = 0x626e'7072'6f70ULL;   // "bnprop"
 constexpr int radius = 4;  // of K = G ⊛ G
@@ -71,19 +71,17 @@ inline std::uint32_t wrap(std::int64_t v, std::uint32_t n) noexcept {
   return static_cast<std::uint32_t>(m < 0 ? m + n : m);
 }
 
-/// One pair's optimization: returns its keys (2 per pixel) and fills report.
+/// One pair's optimization: returns its ranks (one per pixel) and fills report.
 std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_t pair, BlueNoisePairReport& report) {
   const std::uint32_t s = o.size;
   const std::size_t n = std::size_t{s} * s;
   const unsigned levels = static_cast<unsigned>(std::countr_zero(o.max_spp)) + 1;
   const std::size_t m = std::size_t{levels} * o.integrands;  // test columns
 
-  // The keys start as independent uniform 16-bit pairs (white).
-  std::vector<std::uint16_t> keys(2 * n);
-  for (std::size_t p = 0; p < n; ++p) {
-    const std::uint64_t h = hash64(o.seed, tag_keys, pair, p);
-    keys[2 * p] = static_cast<std::uint16_t>(h >> 48), keys[2 * p + 1] = static_cast<std::uint16_t>(h >> 32);
-  }
+  // The ranks start as a random permutation (Fisher–Yates, hashed draws): white.
+  std::vector<std::uint16_t> ranks(n);
+  for (std::size_t p = 0; p < n; ++p) ranks[p] = static_cast<std::uint16_t>(p);
+  for (std::size_t p = n - 1; p > 0; --p) std::swap(ranks[p], ranks[uniform_below(p + 1, o.seed, tag_ranks, pair, p)]);
 
   // e[p·m + c]: the error of pixel p's key on column c = level·T + t.
   std::vector<double> e(n * m), conv(n * m, 0.0);
@@ -92,17 +90,15 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
     const std::uint32_t spp = 1u << level;
     for (std::uint32_t t = 0; t < o.integrands; ++t) {
       const Heaviside h = make_heaviside(o.seed, pair, level, t);
-      std::vector<std::array<std::uint64_t, 2>> words(spp);
-      for (std::uint32_t i = 0; i < spp; ++i)
-        words[i] = {reverse_bits64(h.sx.scramble_reversed(sobol.reversed_bits(i, 0))),
-                    reverse_bits64(h.sy.scramble_reversed(sobol.reversed_bits(i, 1)))};
       const std::size_t c = std::size_t{level} * o.integrands + t;
       double mean = 0;
       for (std::size_t p = 0; p < n; ++p) {
-        const std::uint64_t kx = std::uint64_t{keys[2 * p]} << 48, ky = std::uint64_t{keys[2 * p + 1]} << 48;
+        // pixel p's points: block ranks[p] of the scrambled sequence
         std::uint32_t inside = 0;
         for (std::uint32_t i = 0; i < spp; ++i) {
-          const double x = bits_to_double(words[i][0] ^ kx), y = bits_to_double(words[i][1] ^ ky);
+          const std::uint64_t index = std::uint64_t{ranks[p]} * spp + i;
+          const double x = bits_to_double(reverse_bits64(h.sx.scramble_reversed(sobol.reversed_bits(index, 0))));
+          const double y = bits_to_double(reverse_bits64(h.sy.scramble_reversed(sobol.reversed_bits(index, 1))));
           inside += h.nx * (x - h.cx) + h.ny * (y - h.cy) > 0;
         }
         e[p * m + c] = double(inside) / double(spp);
@@ -185,18 +181,19 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
     add_kernel(ax, ay, delta.data(), 1.0);
     add_kernel(bx, by, delta.data(), -1.0);
     for (std::size_t c = 0; c < m; ++c) std::swap(e[a * m + c], e[b * m + c]);
-    std::swap(keys[2 * a], keys[2 * b]), std::swap(keys[2 * a + 1], keys[2 * b + 1]);
+    std::swap(ranks[a], ranks[b]);
   }
   report.final_energy = energy();
   report.accepted = accepted;
   report.proposed = proposals;
-  return keys;
+  return ranks;
 }
 
 }  // namespace
 
 void check_blue_noise_options(const BlueNoiseOptions& o) {
-  require(o.size >= 16 && o.size <= 512, "size", o.size, "must be an integer in [16, 512] (the tile's side in pixels)");
+  require(o.size >= 16 && o.size <= 256 && std::has_single_bit(o.size), "size", o.size,
+          "must be a power of 2 in [16, 256] (the tile's side in pixels)");
   require(o.dims >= 2 && o.dims <= 64 && o.dims % 2 == 0, "dims", o.dims, "must be an even integer in [2, 64]");
   require(o.max_spp >= 1 && o.max_spp <= 256 && std::has_single_bit(o.max_spp), "max-spp", o.max_spp,
           "must be a power of 2 in [1, 256]");
@@ -204,20 +201,20 @@ void check_blue_noise_options(const BlueNoiseOptions& o) {
   require(o.sweeps <= 100000, "sweeps", o.sweeps, "must be an integer in [0, 100000]");
 }
 
-BlueNoiseKeys optimize_blue_noise(const BlueNoiseOptions& o, std::vector<BlueNoisePairReport>* report,
+BlueNoiseTable optimize_blue_noise(const BlueNoiseOptions& o, std::vector<BlueNoisePairReport>* report,
                                   const std::function<void(std::uint32_t, std::uint32_t)>& progress) {
   check_blue_noise_options(o);
   const std::size_t n = std::size_t{o.size} * o.size;
   const unsigned levels = static_cast<unsigned>(std::countr_zero(o.max_spp)) + 1;
   require_memory(2 * n * levels * o.integrands * sizeof(double), "the optimizer's error images");
-  BlueNoiseKeys table{o.size, o.dims, o.max_spp, o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * o.dims)};
-  if (report) report->assign(o.dims / 2, {});
-  for (std::uint32_t pair = 0; pair < o.dims / 2; ++pair) {
-    if (progress) progress(pair, o.dims / 2);
+  BlueNoiseTable table{o.size, o.dims, o.max_spp, o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * (o.dims / 2))};
+  const std::uint32_t pairs = o.dims / 2;
+  if (report) report->assign(pairs, {});
+  for (std::uint32_t pair = 0; pair < pairs; ++pair) {
+    if (progress) progress(pair, pairs);
     BlueNoisePairReport r;
-    const std::vector<std::uint16_t> keys = optimize_pair(o, pair, r);
-    for (std::size_t p = 0; p < n; ++p)
-      table.keys[p * o.dims + 2 * pair] = keys[2 * p], table.keys[p * o.dims + 2 * pair + 1] = keys[2 * p + 1];
+    const std::vector<std::uint16_t> ranks = optimize_pair(o, pair, r);
+    for (std::size_t p = 0; p < n; ++p) table.ranks[p * pairs + pair] = ranks[p];
     if (report) (*report)[pair] = r;
   }
   return table;

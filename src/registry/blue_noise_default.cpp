@@ -12,8 +12,8 @@ extern const unsigned char blue_noise_default_table[];
 extern const std::size_t blue_noise_default_table_size;
 }  // namespace embedded
 
-const BlueNoiseKeys& default_blue_noise_keys() {
-  static const BlueNoiseKeys table = parse_blue_noise_keys(
+const BlueNoiseTable& default_blue_noise_table() {
+  static const BlueNoiseTable table = parse_blue_noise_table(
       std::string_view(reinterpret_cast<const char*>(embedded::blue_noise_default_table),
                        embedded::blue_noise_default_table_size),
       "data/blue-noise/sobol-bn-default.bin");

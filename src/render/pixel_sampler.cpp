@@ -66,7 +66,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
     for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
   if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, settings_.seed);
-  if (name == "sobol-bn") sobol_bn_.emplace(default_blue_noise_keys(), settings_.seed);
+  if (name == "sobol-bn") sobol_bn_.emplace(default_blue_noise_table(), settings_.spp, settings_.seed);
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
@@ -230,9 +230,9 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = zsobol_->array_point(sequence, k, i, zsobol_pairs_[dimension]);
     return;
   }
-  if (sobol_bn_) {  // sample index · n + j of the pixel's pair: stratified among all its samples' arrays
+  if (sobol_bn_) {  // the pixel's arrays together are its block of spp · n points
     const SobolBn::PixelPair& pair = sobol_bn_pair(dimension);
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = sobol_bn_->point(std::uint64_t{index_} * n + i, pair);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = sobol_bn_->array_point(index_, n, i, pair);
     return;
   }
   if (halton_permute_ && n <= halton_direct_max) {

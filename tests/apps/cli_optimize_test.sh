@@ -11,7 +11,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 "$stratum" optimize blue-noise --size 16 --dims 4 --seed 5 --sweeps 64 -q -o "$tmp/a.bin" >"$tmp/out" && ok \
   || fail "optimize: $(cat "$tmp/out")"
 cmp -s "$tmp/a.bin" "$repo/tests/analysis/data/blue-noise-16.bin" && ok || fail "the committed 16x16 tile is not regenerated"
-grep -q "blue-noise key tile 16x16, 4 dims, seed 5" "$tmp/out" && ok || fail "summary: $(head -2 "$tmp/out")"
+grep -q "blue-noise rank tile 16x16, 4 dims, seed 5" "$tmp/out" && ok || fail "summary: $(head -2 "$tmp/out")"
 "$stratum" optimize blue-noise --size 16 --dims 4 --seed 6 --sweeps 64 -q -o "$tmp/b.bin" >/dev/null && ok || fail "seed 6"
 cmp -s "$tmp/a.bin" "$tmp/b.bin" && fail "another seed gave the same tile" || ok
 
@@ -23,12 +23,13 @@ cmp -s "$tmp/pa" "$tmp/pb" && fail "the table parameter changed nothing" || ok
 cmp -s "$tmp/pa" "$tmp/pd" && fail "the default tile equals a test tile" || ok
 
 expect_error "size" optimize blue-noise --size 8 -o "$tmp/c.bin"
+expect_error "power of 2" optimize blue-noise --size 24 -o "$tmp/c.bin"
 expect_error "dims" optimize blue-noise --size 16 --dims 3 -o "$tmp/c.bin"
 expect_error "max-spp" optimize blue-noise --size 16 --max-spp 12 -o "$tmp/c.bin"
 expect_error "integrands" optimize blue-noise --size 16 --integrands 0 -o "$tmp/c.bin"
 [ ! -e "$tmp/c.bin" ] && ok || fail "a refused run wrote its output"
 expect_error "output" optimize blue-noise --size 16 -o "$tmp/no-such-dir/c.bin"
 echo "not a tile" >"$tmp/bad.bin"
-expect_error "is not a blue-noise key table" points --sampler sobol-bn -n 4 -d 2 --param table="$tmp/bad.bin"
+expect_error "is not a blue-noise rank table" points --sampler sobol-bn -n 4 -d 2 --param table="$tmp/bad.bin"
 
 finish
