@@ -22,6 +22,10 @@ cmp -s "$tmp/a.bin" "$tmp/b.bin" && fail "another seed gave the same tile" || ok
 cmp -s "$tmp/pa" "$tmp/pb" && fail "the table parameter changed nothing" || ok
 cmp -s "$tmp/pa" "$tmp/pd" && fail "the default tile equals a test tile" || ok
 
+# The renderer draws sobol-bn (the committed tile) like any sampler.
+"$stratum" render "$repo/scenes/penumbra.json" --sampler sobol-bn --spp 4 --width 32 --height 32 --quiet \
+  -o "$tmp/bn.png" --exr "$tmp/bn.exr" && [ -s "$tmp/bn.exr" ] && ok || fail "render --sampler sobol-bn"
+
 expect_error "size" optimize blue-noise --size 8 -o "$tmp/c.bin"
 expect_error "power of 2" optimize blue-noise --size 24 -o "$tmp/c.bin"
 expect_error "dims" optimize blue-noise --size 16 --dims 3 -o "$tmp/c.bin"
