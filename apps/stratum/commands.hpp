@@ -14,6 +14,7 @@ void add_local_discrepancy_command(CLI::App& app);  // cmd_local_discrepancy.cpp
 void add_koksma_hlawka_command(CLI::App& app);      // cmd_koksma_hlawka.cpp
 void add_spectrum_command(CLI::App& app);     // cmd_spectrum.cpp
 void add_pair_correlation_command(CLI::App& app);  // cmd_pair_correlation.cpp
+void add_optimize_command(CLI::App& app);     // cmd_optimize.cpp
 void add_render_command(CLI::App& app);       // cmd_render.cpp (only with the renderer built)
 void add_compare_command(CLI::App& app);      // cmd_compare.cpp (only with the renderer built)
 void add_report_command(CLI::App& app);       // cmd_report.cpp (only with the renderer built)

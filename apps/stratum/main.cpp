@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   stratum::cli::add_koksma_hlawka_command(app);
   stratum::cli::add_spectrum_command(app);
   stratum::cli::add_pair_correlation_command(app);
+  stratum::cli::add_optimize_command(app);
 #ifdef STRATUM_HAS_RENDER
   stratum::cli::add_render_command(app);
   stratum::cli::add_compare_command(app);

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "interruptible.hpp"
+#include "stratum/analysis/blue_noise.hpp"
 #include "stratum/analysis/geometry.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/analysis/spectrum.hpp"
@@ -41,6 +42,25 @@ py::dict image_spectrum(const Array& values) {
                   py::arg("variance") = s.variance,
                   py::arg("radial") = py::dict(py::arg("frequency") = s.radial_frequency,
                                                py::arg("power") = s.radial_power));
+}
+
+/// analysis/blue_noise.hpp: the key file's bytes and the per-pair energies.
+py::tuple optimize_blue_noise(std::uint32_t size, std::uint32_t dims, std::uint64_t seed, std::uint32_t max_spp,
+                              std::uint32_t integrands, std::uint32_t sweeps) {
+  sa::BlueNoiseOptions o{size, dims, seed, max_spp, integrands, sweeps};
+  sa::check_blue_noise_options(o);
+  std::vector<sa::BlueNoisePairReport> report;
+  std::string bytes;
+  {
+    py::gil_scoped_release release;
+    bytes = stratum::serialize_blue_noise_table(sa::optimize_blue_noise(o, &report));
+  }
+  py::list pairs;
+  for (const auto& r : report)
+    pairs.append(py::dict(py::arg("initial_energy") = r.initial_energy / r.white_energy,
+                          py::arg("final_energy") = r.final_energy / r.white_energy,
+                          py::arg("accepted") = r.accepted, py::arg("proposed") = r.proposed));
+  return py::make_tuple(py::bytes(bytes), pairs);
 }
 
 /// realizations: a (K, n, d) array.
@@ -94,6 +114,8 @@ py::dict pair_correlation(const Array& x, const std::vector<double>& radii, doub
 void bind_spectra(py::module_& m) {
   m.def("_spectrum", &spectrum, py::arg("realizations"), py::arg("max_frequency"), py::arg("threads"));
   m.def("_image_spectrum", &image_spectrum, py::arg("values"));
+  m.def("_optimize_blue_noise", &optimize_blue_noise, py::arg("size"), py::arg("dims"), py::arg("seed"),
+        py::arg("max_spp"), py::arg("integrands"), py::arg("sweeps"));
   m.def("_pair_correlation", &pair_correlation, py::arg("x"), py::arg("radii"), py::arg("sigma"), py::arg("threads"));
   m.def("_default_pair_correlation_grid", [](std::size_t n, std::size_t d, std::size_t count) {
     const sa::PairCorrelation grid = sa::default_pair_correlation_grid(n, d, count);

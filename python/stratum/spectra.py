@@ -23,7 +23,7 @@ import numpy as np
 from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["spectrum", "pair_correlation", "image_spectrum"]
+__all__ = ["spectrum", "pair_correlation", "image_spectrum", "optimize_blue_noise"]
 
 
 def _realizations(x) -> np.ndarray:
@@ -69,6 +69,46 @@ def image_spectrum(image, reference=None) -> dict:
     result = _stratum._image_spectrum(np.ascontiguousarray(values))
     result["radial"] = {key: np.asarray(value) for key, value in result["radial"].items()}
     return result
+
+
+def _count(name, value, low, high):
+    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)) or not low <= value <= high:
+        raise InvalidArgument(f"invalid {name} = {value!r}: must be an integer in [{low}, {high}]")
+    return int(value)
+
+
+def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 1, max_spp: int = 16, integrands: int = 32,
+                        sweeps: int = 256, output=None) -> dict:
+    """sobol-bn's key tile (docs/blue-noise.md), as ``stratum optimize
+    blue-noise``: per-pixel ranks (which block of the shared Owen-scrambled
+    Sobol' sequence a pixel takes) swapped between pixels so that the
+    blurred error of test heavisides at spp = 1, 2, ..., max_spp is small.
+    Deterministic: the same arguments give the same bytes as the CLI. Returns
+    ``ranks`` (uint16 array (size, size, dims // 2)), ``bytes`` (the file) and
+    ``pairs`` (per dimension pair: initial and final energy, white = 1, and
+    the swaps accepted and proposed); with ``output`` the file is written
+    there (whole or not at all), for ``stratum.points("sobol-bn", ...,
+    table=output)``."""
+    data, pairs = _stratum._optimize_blue_noise(
+        _count("size", size, 0, 1 << 20), _count("dims", dims, 0, 1 << 20),
+        _count("seed", seed, 0, (1 << 64) - 1), _count("max_spp", max_spp, 0, 1 << 20),
+        _count("integrands", integrands, 0, 1 << 20), _count("sweeps", sweeps, 0, 1 << 20))
+    if output is not None:
+        import os
+        import tempfile
+        target = os.fspath(output)
+        folder = os.path.dirname(os.path.abspath(target))
+        handle, staging = tempfile.mkstemp(dir=folder, prefix=".stratum-")
+        try:
+            with os.fdopen(handle, "wb") as f:
+                f.write(data)
+            os.replace(staging, target)
+        except BaseException:
+            if os.path.exists(staging):
+                os.remove(staging)
+            raise
+    ranks = np.frombuffer(data, dtype="<u2", offset=36).reshape(size, size, dims // 2)
+    return {"ranks": ranks, "bytes": data, "pairs": pairs}
 
 
 def spectrum(x, max_frequency: int | None = None, threads: int = 1) -> dict:

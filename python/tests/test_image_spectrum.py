@@ -49,8 +49,10 @@ def test_refused_input():
 
 def test_compare_rows_carry_the_error_spectrum(tmp_path):
     rows = stratum.compare(SCENE, configs=[{"label": "sobol", "sampler": "sobol", "spp": 1},
-                                           {"label": "zsobol", "sampler": "zsobol", "spp": 1}],
+                                           {"label": "zsobol", "sampler": "zsobol", "spp": 1},
+                                           {"label": "sobol-bn", "sampler": "sobol-bn", "spp": 1}],
                            width=64, height=64, reference_spp=256, cache=tmp_path)
     assert len(rows[0]["error_spectrum"]["power"]) == 32
-    # one seed: sobol scatters around 1.09 (sd 0.16), zsobol around 0.25 (sd 0.04)
+    # one seed: sobol scatters around 1.09 (sd 0.16), zsobol around 0.25 (sd 0.04), sobol-bn around 0.29 (sd 0.015)
     assert rows[0]["low_frequency_power"] > 0.6 and rows[1]["low_frequency_power"] < 0.45, rows
+    assert rows[2]["low_frequency_power"] < 0.45, rows

@@ -39,12 +39,14 @@ expect_error "variance-dir" compare --variance-dir "$tmp/afile/sub" --width 4 --
 
 # The error's spectrum per row: null for images under 4 pixels a side, a ring per frequency step otherwise.
 scene="$(dirname "${BASH_SOURCE[0]}")/../../scenes/penumbra.json"
-echo '[{"label": "sobol", "sampler": "sobol", "spp": 1}, {"label": "zsobol", "sampler": "zsobol", "spp": 1}]' >"$tmp/bn.json"
+echo '[{"label": "sobol", "sampler": "sobol", "spp": 1}, {"label": "zsobol", "sampler": "zsobol", "spp": 1},
+      {"label": "sobol-bn", "sampler": "sobol-bn", "spp": 1}]' >"$tmp/bn.json"
 "$stratum" compare "$scene" --configs "$tmp/bn.json" --width 64 --height 64 --reference-spp 256 --cache "$tmp/cache" --json \
   >"$tmp/bn.out" && /usr/bin/python3 -c "
 import json; rows = json.load(open('$tmp/bn.out'))['rows']
 assert len(rows[0]['error_spectrum']['power']) == 32 and rows[0]['error_spectrum']['frequency'][0] == 1 / 64, rows[0]
-assert rows[0]['low_frequency_power'] > 0.6 and rows[1]['low_frequency_power'] < 0.45, rows" && ok || fail "compare error spectra"
+assert rows[0]['low_frequency_power'] > 0.6 and rows[1]['low_frequency_power'] < 0.45, rows
+assert rows[2]['low_frequency_power'] < 0.45, rows" && ok || fail "compare error spectra"
 "$stratum" compare --builtin shadow-rays --width 3 --height 3 --reference-spp 4 --cache "$tmp/cache" --json \
   | /usr/bin/python3 -c "import json, sys; r = json.load(sys.stdin)['rows'][0]; assert r['low_frequency_power'] is None, r" \
   && ok || fail "compare on a 3x3 image gives a spectrum"

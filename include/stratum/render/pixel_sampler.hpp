@@ -41,6 +41,7 @@
 #include "stratum/registry.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/sequences/sobol.hpp"
+#include "stratum/sequences/sobol_bn.hpp"
 #include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -160,6 +161,23 @@ class PixelSampler {
       zsobol_stamps_[dimension] = pixel_stamp_;
     }
     return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair);
+  }
+
+  /// sobol-bn (sequences/sobol_bn.hpp): the tile's pairs share one scramble
+  /// per render (derived once); per pixel and dimension its keyed pair, valid
+  /// when its stamp is this pixel's.
+  std::optional<SobolBn> sobol_bn_;
+  std::vector<SobolBn::PixelPair> sobol_bn_shared_, sobol_bn_pixel_;
+  std::vector<std::uint64_t> sobol_bn_stamps_;
+  const SobolBn::PixelPair& sobol_bn_pair(std::uint32_t dimension) {
+    while (sobol_bn_shared_.size() <= dimension)
+      sobol_bn_shared_.push_back(sobol_bn_->shared_pair(std::uint32_t(sobol_bn_shared_.size())));
+    if (sobol_bn_stamps_.size() <= dimension) sobol_bn_stamps_.resize(dimension + 1, 0), sobol_bn_pixel_.resize(dimension + 1);
+    if (sobol_bn_stamps_[dimension] != pixel_stamp_) {
+      sobol_bn_pixel_[dimension] = sobol_bn_->pixel_pair(pixel_x_, pixel_y_, dimension, sobol_bn_shared_[dimension]);
+      sobol_bn_stamps_[dimension] = pixel_stamp_;
+    }
+    return sobol_bn_pixel_[dimension];
   }
 
   /// halton (permute) without RandomDigitPermutations' tables: what point i < n

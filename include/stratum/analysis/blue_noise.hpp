@@ -1,0 +1,63 @@
+#pragma once
+/// The optimizer of sobol-bn's rank tiles (sequences/sobol_bn.hpp).
+///
+/// Heitz et al. 2019 optimize per-pixel keys so that the errors of
+/// neighbouring pixels, over a set of test integrands, are dissimilar;
+/// Belcour & Heitz 2021 judge a tile by its "blur criterion", the variance
+/// of the Gaussian-blurred error of random heavisides. Here that criterion
+/// is the energy itself:
+///
+///   E = Σ_t Σ_pixels ((G ⊛ e_t)(pixel))²,
+///
+/// e_t the error image of test integrand t (a randomly oriented heaviside
+/// in the pair's two dimensions, integrated by each pixel's block of spp
+/// points, spp = 1, 2, 4, …, max_spp, each integrand with its own random
+/// Owen scramble of the sequence, so the tile serves any seed), normalized
+/// so each integrand weighs the same, and G the binomial filter
+/// [1 4 6 4 1]/16 per axis (a Gaussian of σ = 1 pixel, exact in binary
+/// floating point), on the torus, so the tile wraps seamlessly. A pixel's
+/// errors depend on its rank alone, so ranks are only *swapped* between
+/// pixels, as Heitz et al. swap keys: each integrand's total squared error
+/// is fixed and a swap only moves error power between frequencies; E falls
+/// when it moves to high ones. With K = G ⊛ G the change of a swap of pixels
+/// a and b is 2 δ·(C_a − C_b) + 2 |δ|² (K(0) − K(a − b)), δ = e_b − e_a,
+/// C = K ⊛ e, kept up to date on each accepted swap.
+///
+/// Swaps are accepted by threshold accepting (Dueck & Scheuer 1990, the
+/// deterministic variant of simulated annealing): ΔE < τ, τ falling
+/// linearly to 0 over the run. Every random choice is a hash of the seed
+/// and a counter, the work is single-threaded and the arithmetic contains
+/// no libm call but sqrt (correctly rounded), so the table is the same bit
+/// for bit on every run.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "stratum/sequences/sobol_bn.hpp"
+
+namespace stratum::analysis {
+
+struct BlueNoiseOptions {
+  std::uint32_t size = 128;       ///< tile side in pixels, a power of 2 in [16, 256]
+  std::uint32_t dims = 8;         ///< coordinates (dims / 2 pairs, each optimized on its own), even, [2, 64]
+  std::uint64_t seed = 1;
+  std::uint32_t max_spp = 16;     ///< the sample counts optimized for: 1, 2, 4, …, max_spp (a power of 2, ≤ 256)
+  std::uint32_t integrands = 32;  ///< test integrands per sample count, [1, 1024]
+  std::uint32_t sweeps = 256;     ///< swap proposals per pixel, [0, 100000]
+};
+
+/// What the optimizer reports per pair: E before and after, and E's
+/// expectation for independent errors (white: divide by it, ≈ 1 at the start).
+struct BlueNoisePairReport {
+  double initial_energy = 0, final_energy = 0, white_energy = 0;
+  std::uint64_t accepted = 0, proposed = 0;
+};
+
+/// Validates the options (stratum::invalid_argument naming the bad one).
+void check_blue_noise_options(const BlueNoiseOptions& options);
+
+/// The optimized tile; `progress(pair, pairs)` is called before each pair.
+BlueNoiseTable optimize_blue_noise(const BlueNoiseOptions& options, std::vector<BlueNoisePairReport>* report = nullptr,
+                                  const std::function<void(std::uint32_t, std::uint32_t)>& progress = {});
+
+}  // namespace stratum::analysis

@@ -1,0 +1,189 @@
+// sobol-bn (sequences/sobol_bn.hpp): per-pixel (0,m,2)-nets in every pair
+// (table and padding), the tile's pixels partitioning the sequence, unbiasedness over seeds (t-tests, Šidák-corrected),
+// the key file round trip and its refusals, the committed default tile, and
+// the registry's points equal to the renderer's draws.
+#include "stratum/sequences/sobol_bn.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <vector>
+
+#include "../patterns/unbiased.hpp"
+#include "stratum/registry.hpp"
+#ifdef STRATUM_HAS_RENDER
+#include "stratum/render/pixel_sampler.hpp"
+#endif
+
+namespace {
+
+using stratum::SobolBn;
+
+bool is_zero_net(const std::vector<std::array<double, 2>>& points) {
+  const std::size_t n = points.size();
+  const int m = std::countr_zero(n);
+  for (int a = 0; a <= m; ++a) {
+    std::vector<int> count(n, 0);
+    for (const auto& p : points) {
+      const auto i = static_cast<std::size_t>(p[0] * double(1u << a)), j = static_cast<std::size_t>(p[1] * double(1u << (m - a)));
+      ++count[i * (std::size_t(1) << (m - a)) + j];
+    }
+    for (int c : count)
+      if (c != 1) return false;
+  }
+  return true;
+}
+
+TEST(SobolBn, EachPixelIsANetInEveryPair) {
+  for (std::uint64_t spp : {1u, 2u, 4u, 8u, 16u, 64u, 256u}) {
+    const SobolBn z(stratum::default_blue_noise_table(), spp, 7);
+    const std::uint32_t pairs = z.table_pairs() + 2;  // two padding pairs too
+    for (std::uint32_t pair = 0; pair < pairs; ++pair)
+      for (auto [x, y] : {std::pair{0u, 0u}, std::pair{5u, 9u}, std::pair{63u, 200u}, std::pair{1000u, 3u}}) {
+        std::vector<std::array<double, 2>> points;
+        for (std::uint64_t i = 0; i < spp; ++i) points.push_back(z.sample_2d(x, y, i, pair));
+        EXPECT_TRUE(is_zero_net(points)) << "spp " << spp << " pair " << pair << " pixel " << x << "," << y;
+      }
+  }
+}
+
+TEST(SobolBn, TheTilesPixelsPartitionTheSequence) {
+  // Any size × size window of pixels takes each rank once (the tile wraps),
+  // so neighbouring pixels never share a block.
+  const stratum::BlueNoiseTable& table = stratum::default_blue_noise_table();
+  for (std::uint64_t spp : {1u, 4u}) {
+    const SobolBn z(table, spp, 0);
+    for (std::uint32_t pair = 0; pair < z.table_pairs(); ++pair) {
+      std::vector<bool> seen(std::size_t{table.size} * table.size, false);
+      for (std::uint32_t y = 0; y < table.size; ++y)
+        for (std::uint32_t x = 0; x < table.size; ++x) {
+          const auto p = z.pixel_pair(x, y, pair);
+          ASSERT_EQ(p.first % spp, 0u);
+          const std::uint64_t block = p.first / spp;
+          const std::uint64_t rank = block % seen.size();
+          EXPECT_FALSE(seen[rank]);
+          seen[rank] = true;
+        }
+      EXPECT_EQ(std::count(seen.begin(), seen.end(), true), std::ptrdiff_t(seen.size()));
+    }
+  }
+}
+
+TEST(SobolBn, TheTileWrapsOverFreshBlocks) {
+  const stratum::BlueNoiseTable& table = stratum::default_blue_noise_table();
+  const SobolBn z(table, 4, 3);
+  const std::uint32_t s = table.size;
+  for (std::uint32_t pair = 0; pair < z.table_pairs(); ++pair) {
+    // a pixel and the pixel one tile away take the same rank in the next tile's blocks
+    const std::uint64_t pixels = std::uint64_t{s} * s;
+    EXPECT_EQ(z.pixel_pair(4, 9, pair).first / 4 % pixels, z.pixel_pair(4 + s, 9 + 2 * s, pair).first / 4 % pixels);
+    EXPECT_NE(z.pixel_pair(4, 9, pair).first, z.pixel_pair(4 + s, 9 + 2 * s, pair).first);
+    EXPECT_NE(z.sample_2d(4, 9, 0, pair), z.sample_2d(5, 9, 0, pair));
+  }
+  // padding pairs do not wrap: per-pixel scrambles
+  EXPECT_NE(z.sample_2d(4, 9, 0, z.table_pairs()), z.sample_2d(4 + s, 9, 0, z.table_pairs()));
+}
+
+TEST(SobolBn, UnbiasedOverSeeds) {
+  // 3 pixels × 2 spp values × 2 (table, padding) = 12 t-tests at family level 0.01.
+  const double alpha = stratum::testing::sidak(0.01, 12);
+  const stratum::BlueNoiseTable& table = stratum::default_blue_noise_table();
+  const std::uint32_t padding = table.dims / 2;
+  for (std::uint32_t first : {0u, padding})
+    for (std::uint64_t spp : {1u, 16u})
+      for (auto [x, y] : {std::pair{0u, 0u}, std::pair{3u, 1u}, std::pair{77u, 6u}}) {
+        std::vector<double> estimates;
+        for (std::uint64_t seed = 0; seed < 400; ++seed) {
+          const SobolBn z(table, spp, seed);
+          double sum = 0;
+          for (std::uint64_t i = 0; i < spp; ++i) {
+            const auto a = z.sample_2d(x, y, i, first), b = z.sample_2d(x, y, i, first + 1);
+            sum += a[0] * a[1] * a[1] * std::exp(b[0]);
+          }
+          estimates.push_back(sum / double(spp));
+        }
+        stratum::testing::expect_unbiased("sobol-bn pair " + std::to_string(first) + " spp " + std::to_string(spp),
+                                          estimates, stratum::testing::product_test_integral(), alpha);
+      }
+}
+
+TEST(SobolBn, TheKeyFileRoundTripsAndBadFilesAreRefused) {
+  stratum::BlueNoiseTable table{16, 4, 4, 3, 5, 99, std::vector<std::uint16_t>(16 * 16 * 2)};
+  for (std::size_t i = 0; i < 256; ++i) table.ranks[2 * i] = std::uint16_t(i), table.ranks[2 * i + 1] = std::uint16_t(255 - i);
+  const std::string bytes = stratum::serialize_blue_noise_table(table);
+  EXPECT_EQ(bytes.size(), 36u + 2 * table.ranks.size());
+  EXPECT_EQ(stratum::parse_blue_noise_table(bytes, "t"), table);
+  EXPECT_THROW(stratum::parse_blue_noise_table(bytes.substr(0, bytes.size() - 1), "t"), stratum::invalid_argument);
+  EXPECT_THROW(stratum::parse_blue_noise_table("STRBNR02" + bytes.substr(8), "t"), stratum::invalid_argument);
+  std::string odd = bytes;
+  odd[12] = 3;  // dims 3
+  EXPECT_THROW(stratum::parse_blue_noise_table(odd, "t"), stratum::invalid_argument);
+  std::string repeated = bytes;
+  repeated[36] = 1;  // pixel 0's rank of pair 0 = pixel 1's: not a permutation
+  EXPECT_THROW(stratum::parse_blue_noise_table(repeated, "t"), stratum::invalid_argument);
+  std::string not_power = bytes;
+  not_power[8] = 24;
+  EXPECT_THROW(stratum::parse_blue_noise_table(not_power, "t"), stratum::invalid_argument);
+  stratum::SamplerRequest request;
+  request.n = 4;
+  request.params = {{"table", "/nonexistent/keys.bin"}};
+  EXPECT_THROW(stratum::generate_points("sobol-bn", request), stratum::invalid_argument);
+}
+
+TEST(SobolBn, TheDefaultTileIsTheDocumentedOne) {
+  // docs/blue-noise.md: stratum optimize blue-noise --size 128 --dims 8 --seed 1 (defaults otherwise)
+  const stratum::BlueNoiseTable& table = stratum::default_blue_noise_table();
+  EXPECT_EQ(table.size, 128u);
+  EXPECT_EQ(table.dims, 8u);
+  EXPECT_EQ(table.seed, 1u);
+  EXPECT_EQ(table.max_spp, 16u);
+  EXPECT_EQ(table.ranks.size(), 128u * 128u * 4u);
+}
+
+#ifdef STRATUM_HAS_RENDER
+TEST(SobolBn, RegistryPointsAreTheRenderersDraws) {
+  stratum::render::PixelSamplerSettings settings;
+  settings.sampler = "sobol-bn";
+  settings.spp = 8;
+  settings.seed = 21;
+  stratum::render::PixelSampler sampler(settings);
+  const std::uint32_t d = 2 * (stratum::default_blue_noise_table().dims / 2 + 1);  // one padding pair too
+  for (auto [x, y] : {std::pair{0u, 0u}, std::pair{17u, 33u}, std::pair{390u, 2u}}) {
+    stratum::SamplerRequest request;
+    request.n = 8;
+    request.d = d;
+    request.seed = 21;
+    request.params = {{"pixel", std::to_string(x) + "," + std::to_string(y)}};
+    const stratum::PointSet points = stratum::generate_points("sobol-bn", request);
+    for (std::uint32_t i = 0; i < 8; ++i) {
+      sampler.start_pixel_sample(x, y, i);
+      const auto film = sampler.get_pixel_2d();
+      const double time = sampler.get_time();
+      EXPECT_EQ(film[0], points(i, 0));
+      EXPECT_EQ(film[1], points(i, 1));
+      EXPECT_EQ(time, points(i, 2));
+      for (std::uint32_t p = 2; p < d / 2; ++p) {
+        const auto u = sampler.get_2d();
+        EXPECT_EQ(u[0], points(i, 2 * p));
+        EXPECT_EQ(u[1], points(i, 2 * p + 1));
+      }
+    }
+  }
+  // a one-point array of sample i is the pair's sample i; a 4-point array the points 4i..4i+3 of the pixel's 32
+  sampler.start_pixel_sample(5, 6, 3);
+  std::array<double, 2> one[1], four[4];
+  sampler.get_2d_array(1, one);
+  sampler.get_2d_array(4, four);
+  const SobolBn z(stratum::default_blue_noise_table(), 8, 21);
+  EXPECT_EQ(one[0], z.sample_2d(5, 6, 3, 0));
+  const SobolBn z32(stratum::default_blue_noise_table(), 32, 21);
+  for (std::uint32_t j = 0; j < 4; ++j) {
+    EXPECT_EQ(four[j], z.array_point(3, 4, j, z.pixel_pair(5, 6, 1)));
+    EXPECT_EQ(four[j], z32.sample_2d(5, 6, 12 + j, 1));
+  }
+}
+#endif
+
+}  // namespace
