@@ -87,9 +87,9 @@ std::string time_and_efficiency_text(const RowStatistics& row, const std::string
   if (row.time_resolved)
     return fmt::format("took {} the time of {}, so its efficiency 1/(MSE × seconds) is {} that of {}",
                        format_factor(row.time_ratio), first_label, format_factor(row.efficiency_ratio), first_label);
-  return fmt::format("took the time of {} within the timing noise (time ratio {}), so no efficiency ratio is quoted "
-                     "beyond the MSE ratio",
-                     first_label, format_interval(row.time_ratio));
+  return fmt::format("took the time of {} within the timing noise (the times agree within ±{}%), so no efficiency "
+                     "ratio is quoted beyond the MSE ratio",
+                     first_label, format_number(noise_percent(row.time_ratio), 2));
 }
 
 Table repeated_table(const RepeatedComparison& comparison, const std::vector<RowStatistics>& statistics,

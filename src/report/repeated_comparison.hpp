@@ -81,7 +81,7 @@ std::string efficiency_text(const RowStatistics& row);
 /// "took 3.9× (95% CI 3.7–4.1) the time of 1 shadow ray, so its efficiency
 /// 1/(MSE × seconds) is 4.4× (95% CI …) that of 1 shadow ray" when the time
 /// ratio's interval excludes 1, else that the times agree within their noise
-/// and the efficiency ratio is the MSE ratio.
+/// (±x%, noise_percent) and no efficiency ratio is quoted.
 std::string time_and_efficiency_text(const RowStatistics& row, const std::string& first_label);
 
 }  // namespace stratum::report
