@@ -144,14 +144,48 @@ std::string index_html(const std::vector<Section>& sections) {
 
 }  // namespace
 
+namespace {
+
+/// The decimals that give `value` `digits` significant digits in fixed
+/// notation, counted after rounding (0.9996 rounds to 1.00, not 1.000).
+int fixed_decimals(double value, int digits) {
+  const double magnitude = std::fabs(value);
+  if (magnitude == 0) return std::max(0, digits - 1);
+  const int integer_digits = static_cast<int>(std::floor(std::log10(magnitude))) + 1;
+  const int decimals = std::max(0, digits - integer_digits);
+  // Rounded up to the next power of ten, the value has one integer digit more.
+  if (decimals > 0 && std::round(magnitude * std::pow(10.0, decimals)) >= std::pow(10.0, digits)) return decimals - 1;
+  return decimals;
+}
+
+bool fixed_range(double value) {
+  const double magnitude = std::fabs(value);
+  return value == 0 || (magnitude >= 1e-3 && magnitude < 1e6);
+}
+
+}  // namespace
+
 std::string format_number(double value, int digits) {
   if (!std::isfinite(value)) return std::isnan(value) ? "n/a" : (value > 0 ? "∞" : "−∞");
-  const double magnitude = std::fabs(value);
-  if (value == 0 || (magnitude >= 1e-3 && magnitude < 1e6)) {
-    const int integer_digits = value == 0 ? 1 : static_cast<int>(std::floor(std::log10(magnitude))) + 1;
-    return fmt::format("{:.{}f}", value, std::max(0, digits - integer_digits));
-  }
+  if (fixed_range(value)) return fmt::format("{:.{}f}", value, fixed_decimals(value, digits));
   return fmt::format("{:.{}e}", value, std::max(0, digits - 1));
+}
+
+FormattedInterval format_alike(double estimate, double low, double high, int digits) {
+  const bool fixed = std::isfinite(estimate) && std::isfinite(low) && std::isfinite(high) && fixed_range(estimate) &&
+                     fixed_range(low) && fixed_range(high);
+  if (fixed) {
+    // The estimate's decimals, or more where a bound would keep fewer than
+    // two significant digits with them.
+    int decimals = fixed_decimals(estimate, digits);
+    for (const double bound : {low, high})
+      if (bound != 0) decimals = std::max(decimals, fixed_decimals(bound, 2));
+    if (decimals <= digits + 3) {
+      const auto fixed_text = [&](double v) { return fmt::format("{:.{}f}", v, decimals); };
+      return {fixed_text(estimate), fixed_text(low), fixed_text(high)};
+    }
+  }
+  return {format_number(estimate, digits), format_number(low, digits), format_number(high, digits)};
 }
 
 std::string report_html(const std::vector<Section>& sections, const ReportOptions& options, double seconds) {

@@ -79,8 +79,17 @@ std::string mse_text(const MeanError& m) {
 }  // namespace
 
 std::string efficiency_text(const RowStatistics& row) {
-  if (row.time_resolved) return format_interval(row.efficiency_ratio) + "×";
+  if (row.time_resolved) return format_factor(row.efficiency_ratio);
   return fmt::format("not resolved: the times agree within ±{}%", format_number(noise_percent(row.time_ratio), 2));
+}
+
+std::string time_and_efficiency_text(const RowStatistics& row, const std::string& first_label) {
+  if (row.time_resolved)
+    return fmt::format("took {} the time of {}, so its efficiency 1/(MSE × seconds) is {} that of {}",
+                       format_factor(row.time_ratio), first_label, format_factor(row.efficiency_ratio), first_label);
+  return fmt::format("took the time of {} within the timing noise (the times agree within ±{}%), so no efficiency "
+                     "ratio is quoted beyond the MSE ratio",
+                     first_label, format_number(noise_percent(row.time_ratio), 2));
 }
 
 Table repeated_table(const RepeatedComparison& comparison, const std::vector<RowStatistics>& statistics,
@@ -109,6 +118,14 @@ Table repeated_table(const RepeatedComparison& comparison, const std::vector<Row
   return table;
 }
 
+nlohmann::json repeated_grid(const RepeatedComparison& comparison, const std::vector<Crop>& crops) {
+  std::vector<GridColumn> columns{{&comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)}};
+  for (std::size_t c = 0; c < comparison.labels.size(); ++c)
+    columns.push_back({&comparison.images.at(0)[c],
+                       fmt::format("{}\nMSE {}", comparison.labels[c], format_number(comparison.mse[c].at(0)))});
+  return picture_grid(columns, crops, &comparison.reference, "|error| against the reference");
+}
+
 nlohmann::json interval_json(const RatioInterval& interval) {
   return {{"estimate", interval.estimate},
           {"low", interval.low},
@@ -134,13 +151,19 @@ nlohmann::json repeated_numbers(const RepeatedComparison& comparison, const std:
         // Quoted only when the times differ beyond their noise (else null).
         {"efficiency_ratio", row.time_resolved ? interval_json(row.efficiency_ratio) : nlohmann::json(nullptr)},
         {"efficiency_ratio_unresolved", interval_json(row.efficiency_ratio)}};
+    if (!comparison.images.empty())  // the first seed's, for the unbiasedness checks of the tests
+      rows[comparison.labels[c]]["sample_variance"] = mean_sample_variance(comparison.images.front().at(c));
   }
+  double reference_variance = 0;
+  for (const double v : comparison.reference.variance) reference_variance += v;
+  if (!comparison.reference.variance.empty()) reference_variance /= double(comparison.reference.variance.size());
   return {{"width", comparison.reference.width},
           {"height", comparison.reference.height},
           {"reference_spp", comparison.reference_spp},
           {"reference_cached", comparison.reference_cached},
           {"repeats", comparison.repeats},
           {"equal_time_seconds", comparison.equal_time},
+          {"reference_variance", reference_variance},
           {"interval_method", interval_method(comparison.repeats)},
           {"rows", rows}};
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "render_support.hpp"
 #include "section_context.hpp"
 #include "seed_statistics.hpp"
 #include "stratum/render/compare.hpp"
@@ -59,8 +60,15 @@ Table repeated_table(const RepeatedComparison& comparison, const std::vector<Row
                      const std::string& caption);
 
 /// What report.json holds of it: per configuration the per-seed MSE and
-/// seconds, their summaries and the three ratio intervals.
+/// seconds, their summaries, the three ratio intervals and (with images)
+/// the first seed's per-sample variance (mean_sample_variance); the
+/// reference's mean variance of the mean (the floor under every MSE).
 nlohmann::json repeated_numbers(const RepeatedComparison& comparison, const std::vector<RowStatistics>& statistics);
+
+/// The first seed as a picture grid (render_support.hpp picture_grid): the
+/// reference, then each configuration with its MSE; the heat maps show
+/// |render − reference|.
+nlohmann::json repeated_grid(const RepeatedComparison& comparison, const std::vector<Crop>& crops);
 
 /// The interval as JSON: {estimate, low, high, count, confidence}.
 nlohmann::json interval_json(const RatioInterval& interval);
@@ -68,5 +76,12 @@ nlohmann::json interval_json(const RatioInterval& interval);
 /// A sentence part: "2.1× (95% CI 1.8–2.5)" for a resolved efficiency
 /// ratio, else "not resolved: the times agree within ±7%".
 std::string efficiency_text(const RowStatistics& row);
+
+/// A sentence on a configuration's time and efficiency against the first's:
+/// "took 3.9× (95% CI 3.7–4.1) the time of 1 shadow ray, so its efficiency
+/// 1/(MSE × seconds) is 4.4× (95% CI …) that of 1 shadow ray" when the time
+/// ratio's interval excludes 1, else that the times agree within their noise
+/// (±x%, noise_percent) and no efficiency ratio is quoted.
+std::string time_and_efficiency_text(const RowStatistics& row, const std::string& first_label);
 
 }  // namespace stratum::report

@@ -16,6 +16,9 @@
 ///  - the analysis study (analysis::run_importance_study): area against
 ///    solid-angle sampling of a square light as its size and distance vary,
 ///    with predicted variances.
+/// The renders are repeated over seeds, the configurations paired on each
+/// (repeated_comparison.hpp): ratios come with intervals, and efficiency
+/// ratios only where the times differ beyond their noise.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -23,6 +26,7 @@
 #include <limits>
 
 #include "render_support.hpp"
+#include "repeated_comparison.hpp"
 #include "sections.hpp"
 #include "stratum/analysis/importance_study.hpp"
 #include "stratum/registry.hpp"
@@ -124,6 +128,28 @@ nlohmann::json comparisons_json(const std::vector<analysis::ImportanceComparison
   return rows;
 }
 
+/// A repeated comparison with its statistics (against the first configuration).
+struct Measured {
+  RepeatedComparison run;
+  std::vector<RowStatistics> rows;
+};
+
+Measured measure(const render::ComparisonScene& scene, const std::vector<render::CompareConfig>& configs,
+                 std::uint32_t reference_spp, const std::string& cache_dir, unsigned repeats) {
+  render::CompareOptions options;
+  options.reference_spp = reference_spp;
+  options.cache_dir = cache_dir;
+  Measured result{run_repeated_comparison(scene, configs, options, repeats), {}};
+  result.rows = row_statistics(result.run, result.run.mse);
+  return result;
+}
+
+/// "its MSE is 3.1× (95% CI 2.9–3.3) smaller" and the time clause of row `c`.
+std::string mse_and_time(const Measured& m, std::size_t c) {
+  return fmt::format("its MSE is {} smaller, and it {}", format_factor(m.rows.at(c).mse_ratio),
+                     time_and_efficiency_text(m.rows.at(c), m.run.labels.at(0) + " sampling"));
+}
+
 }  // namespace
 
 Section importance_section(SectionContext& context) {
@@ -139,17 +165,22 @@ Section importance_section(SectionContext& context) {
   projected.label = "projected solid angle";
   projected.settings.light_strategy = "projected-solid-angle";
   light_configs.push_back(projected);
-  const RenderedComparison light = run_comparison(box, light_configs, scale.reference_spp, context.cache_dir());
+  // Seeds: the slide's renders (400 light samples per pixel) cost most.
+  const unsigned light_repeats = context.quick() ? 3 : 3, repeats = context.quick() ? 3 : 6;
+  const Measured light = measure(box, light_configs, scale.reference_spp, context.cache_dir(), light_repeats);
   section.figures.push_back(image_figure(
-      context, comparison_grid(light, {}), "light-strategy",
+      context, repeated_grid(light.run, {}), "light-strategy",
       fmt::format("As on the slide: direct lighting, {}×{} pixels, {} eye rays × {} shadow rays per pixel, the light "
-                  "sampled by area, by solid angle and by projected solid angle; below, each render's error on one "
-                  "colour scale",
-                  scale.width, scale.height, light.rows.front().samples, light_configs.front().settings.light_samples),
+                  "sampled by area, by solid angle and by projected solid angle (first seed); below, each render's "
+                  "error on one colour scale",
+                  scale.width, scale.height, light.run.samples.front().front(),
+                  light_configs.front().settings.light_samples),
       4));
-  section.tables.push_back(comparison_table(
-      light, fmt::format("Area, solid-angle and projected-solid-angle light sampling against a {}-spp reference", light.reference_spp)));
-  section.numbers["light_strategy"] = comparison_numbers(light);
+  section.tables.push_back(repeated_table(
+      light.run, light.rows,
+      fmt::format("Area, solid-angle and projected-solid-angle light sampling against a {}-spp reference ({})",
+                  light.run.reference_spp, interval_method(light_repeats))));
+  section.numbers["light_strategy"] = repeated_numbers(light.run, light.rows);
 
   // Where they differ: the 300 × 300 mm light (the soft-shadow scene of §2),
   // 1 shadow ray per eye ray, so that each render shows its own estimator's
@@ -162,24 +193,36 @@ Section importance_section(SectionContext& context) {
     one.settings.light_samples = 1;
     few.push_back(one);
   }
-  const RenderedComparison close = run_comparison(large, few, scale.few_samples_reference_spp, context.cache_dir());
+  const Measured close = measure(large, few, scale.few_samples_reference_spp, context.cache_dir(), repeats);
   const Crop upper_wall{0.0, 0.06, 0.3, 0.3, "wall under the light"};
   section.figures.push_back(image_figure(
-      context, comparison_grid(close, {upper_wall}), "light-strategy-large",
+      context, repeated_grid(close.run, {upper_wall}), "light-strategy-large",
       fmt::format("Where they differ: the 300 × 300 mm light of §2, {} eye rays × 1 shadow ray per pixel, area and "
-                  "projected-solid-angle sampling; the red wall just under the light enlarged, and each render's error",
-                  close.rows.front().samples),
+                  "projected-solid-angle sampling (first seed); the red wall just under the light enlarged, and each "
+                  "render's error",
+                  close.run.samples.front().front()),
       3));
-  section.tables.push_back(comparison_table(
-      close, fmt::format("The large light, 1 shadow ray per eye ray, against a {}-spp reference", close.reference_spp)));
-  section.numbers["light_strategy_large"] = comparison_numbers(close);
+  section.tables.push_back(repeated_table(
+      close.run, close.rows,
+      fmt::format("The large light, 1 shadow ray per eye ray, against a {}-spp reference ({})",
+                  close.run.reference_spp, interval_method(repeats))));
+  section.numbers["light_strategy_large"] = repeated_numbers(close.run, close.rows);
+  // The wall under the light: each seed's MSE over the crop.
+  std::vector<RowStatistics> wall_rows;
   {
     const PixelBox wall = crop_pixels(upper_wall, scale.width, scale.height);
-    for (std::size_t i = 0; i < close.rows.size(); ++i) {
-      const RegionError error = region_error(close.images[i], close.reference, wall);
-      section.numbers["light_strategy_large"]["wall"][close.rows[i].label] = {{"mse", error.mse},
-                                                                             {"sample_variance", error.sample_variance}};
-    }
+    const std::vector<bool> mask = box_mask(wall, scale.width, scale.height);
+    std::vector<std::vector<double>> wall_mse(few.size());
+    for (const auto& images : close.run.images)
+      for (std::size_t c = 0; c < images.size(); ++c)
+        wall_mse[c].push_back(masked_mean_squared_error(images[c], close.run.reference, mask));
+    wall_rows = row_statistics(close.run, wall_mse);
+    for (std::size_t c = 0; c < few.size(); ++c)
+      section.numbers["light_strategy_large"]["wall"][close.run.labels[c]] = {
+          {"mse_per_seed", wall_mse[c]},
+          {"mse_mean", wall_rows[c].mse.mean},
+          {"mse_ratio", interval_json(wall_rows[c].mse_ratio)},
+          {"sample_variance", region_error(close.run.images[0][c], close.run.reference, wall).sample_variance}};
     section.numbers["light_strategy_large"]["wall"]["box"] = {wall.x, wall.y, wall.width, wall.height};
   }
 
@@ -192,16 +235,20 @@ Section importance_section(SectionContext& context) {
     config.settings.light_samples = 4;
     sky_configs.push_back(config);
   }
-  const RenderedComparison hemisphere = run_comparison(sky_scene, sky_configs, scale.few_samples_reference_spp, context.cache_dir());
+  const Measured hemisphere = measure(sky_scene, sky_configs, scale.few_samples_reference_spp, context.cache_dir(), repeats);
   section.figures.push_back(image_figure(
-      context, comparison_grid(hemisphere, {}), "hemisphere",
+      context, repeated_grid(hemisphere.run, {}), "hemisphere",
       fmt::format("Irradiance under a uniform sky (an environment light of radiance 1), {}×{} pixels, {} eye rays × "
-                  "{} directions per pixel: uniform and cosine-weighted hemisphere directions, and each render's error",
-                  scale.width, scale.height, hemisphere.rows.front().samples, sky_configs.front().settings.light_samples),
+                  "{} directions per pixel: uniform and cosine-weighted hemisphere directions (first seed), and each "
+                  "render's error",
+                  scale.width, scale.height, hemisphere.run.samples.front().front(),
+                  sky_configs.front().settings.light_samples),
       3));
-  section.tables.push_back(comparison_table(
-      hemisphere, fmt::format("Uniform vs cosine-weighted irradiance under the sky against a {}-spp reference", hemisphere.reference_spp)));
-  section.numbers["hemisphere"] = comparison_numbers(hemisphere);
+  section.tables.push_back(repeated_table(
+      hemisphere.run, hemisphere.rows,
+      fmt::format("Uniform vs cosine-weighted irradiance under the sky against a {}-spp reference ({})",
+                  hemisphere.run.reference_spp, interval_method(repeats))));
+  section.numbers["hemisphere"] = repeated_numbers(hemisphere.run, hemisphere.rows);
 
   // The directions themselves: a jittered 16×16 grid through each warp.
   {
@@ -291,11 +338,7 @@ Section importance_section(SectionContext& context) {
                   study.runs, study.samples)));
   section.numbers["study"] = study_data;
 
-  const auto& area = light.rows.at(0);
-  const auto& solid = light.rows.at(1);
-  const auto& uniform = hemisphere.rows.at(0);
-  const auto& cosine = hemisphere.rows.at(1);
-  const auto& projected_row = light.rows.at(2);
+  const RowStatistics& solid = light.rows.at(1);
   // The study's variance ratio (area / solid angle) at its smallest and largest light size over distance.
   const analysis::ImportanceComparison* smallest = nullptr;
   const analysis::ImportanceComparison* largest = nullptr;
@@ -309,20 +352,16 @@ Section importance_section(SectionContext& context) {
   const auto& zero = section.numbers["zero_variance"];
   section.text.push_back(fmt::format(
       "Drawing X from p and averaging f(X)/p(X) is unbiased for any p > 0 where f ≠ 0; the variance depends on how "
-      "well p follows f. With {} eye rays and {} shadow rays per pixel, the MSE of area sampling of the light is {}× "
-      "that of solid-angle sampling; solid angle took {}× the time, so its efficiency is {}× area sampling's.",
-      area.samples, light_configs.front().settings.light_samples, format_number(solid.mse_ratio),
-      format_number(solid.seconds / area.seconds), format_number(solid.efficiency_ratio)));
-  const auto& large_area = close.rows.at(0);
-  const auto& large_projected = close.rows.at(1);
-  const auto& wall = section.numbers["light_strategy_large"]["wall"];
+      "well p follows f. With {} eye rays and {} shadow rays per pixel, over {} seeds, the MSE of area sampling of "
+      "the light is {} that of solid-angle sampling, and solid angle {}.",
+      light.run.samples.front().front(), light_configs.front().settings.light_samples, light_repeats,
+      format_factor(solid.mse_ratio), time_and_efficiency_text(solid, "area sampling")));
+  const RowStatistics& large_projected = close.rows.at(1);
   section.text.push_back(fmt::format(
       "The slide's comparison is with projected solid angle (p ∝ cos θ dω, which also follows the cosine at the "
-      "receiver): with {} shadow rays its MSE is {}× smaller than area sampling's and its efficiency {}× area's, "
-      "and the two pictures look alike: with 400 light samples per pixel both have converged far enough that "
-      "their difference hides under the noise that remains.",
-      light_configs.front().settings.light_samples, format_number(projected_row.mse_ratio),
-      format_number(projected_row.efficiency_ratio)));
+      "receiver): with {} shadow rays {}; and the two pictures look alike: with 400 light samples per pixel both "
+      "have converged far enough that their difference hides under the noise that remains.",
+      light_configs.front().settings.light_samples, mse_and_time(light, 2)));
   section.text.push_back(fmt::format(
       "Why the box's gain is so much smaller than the study's below: the study measures one unoccluded square "
       "light centred above the receiver, where all that varies over the light is the geometric factor "
@@ -335,19 +374,18 @@ Section importance_section(SectionContext& context) {
       "least {}.",
       format_number(smallest->variance_ratio), format_number(smallest->size / smallest->distance),
       format_number(largest->variance_ratio), format_number(largest->size / largest->distance),
-      format_number(solid.mse_ratio), format_number(lowest_ratio)));
+      format_interval(solid.mse_ratio), format_number(lowest_ratio)));
   section.text.push_back(fmt::format(
       "Grow the light to 300 × 300 mm and take 1 shadow ray per eye ray, and the walls just under it see the light "
       "large, close and at grazing angles, where the geometric factor varies most: there area sampling's MSE is "
-      "{}× that of projected solid angle ({}× over the whole image), the study's large-light end seen in the box.",
-      format_number(wall[large_area.label]["mse"].get<double>() / wall[large_projected.label]["mse"].get<double>()),
-      format_number(large_projected.mse_ratio)));
+      "{} that of projected solid angle ({} over the whole image, {} seeds), the study's large-light end seen in "
+      "the box.",
+      format_factor(wall_rows.at(1).mse_ratio), format_factor(large_projected.mse_ratio), repeats));
   section.text.push_back(fmt::format(
       "Irradiance E = ∫ L cos θ dω under a uniform sky: cosine-weighted directions (p = cos θ/π) cancel the cosine, "
       "so on the open floor every sample gives the same value and only the spheres' occlusion is left to vary. "
-      "The MSE with uniform directions is {}× that with cosine-weighted ones; cosine-weighted sampling took {}× "
-      "the time of uniform, an efficiency ratio (cosine/uniform) of {}.",
-      format_number(cosine.mse_ratio), format_number(cosine.seconds / uniform.seconds), format_number(cosine.efficiency_ratio)));
+      "The MSE with uniform directions is {} that with cosine-weighted ones, and cosine-weighted sampling {}.",
+      format_factor(hemisphere.rows.at(1).mse_ratio), time_and_efficiency_text(hemisphere.rows.at(1), "uniform")));
   section.text.push_back(fmt::format(
       "Under a constant sky the integrand L ρ/π cos θ is proportional to the cosine density, so in exact arithmetic "
       "every cosine-weighted sample equals ρL: over {} samples the measured per-sample variance is {} with cosine-weighted directions (the largest of any "
@@ -357,6 +395,11 @@ Section importance_section(SectionContext& context) {
       format_number(zero["cosine"]["largest_pixel_variance"]), format_number(zero["uniform"]["sample_variance"]),
       format_number(zero["uniform"]["predicted_variance"]), format_number(zero["cosine"]["mean"], 4),
       format_number(zero["uniform"]["mean"], 4), format_number(zero["expected_mean"], 4)));
+  section.text.push_back(fmt::format("Intervals: {}{}.", interval_method(repeats),
+                                     light_repeats == repeats
+                                         ? std::string()
+                                         : fmt::format(" ({} seeds for the slide's renders of 400 light samples per pixel)",
+                                                       light_repeats)));
   section.try_it = {"stratum compare --builtin light-strategy --width 64 --height 64",
                     "stratum compare --builtin hemisphere --width 64 --height 64",
                     "stratum study importance --plot importance.png"};

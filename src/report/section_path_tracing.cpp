@@ -72,13 +72,6 @@ Section path_tracing_section(SectionContext& context) {
   section.numbers["equal_time"] = repeated_numbers(timed_run, time_stats);
   section.numbers["shadow_rays_per_pixel"] = {{configs.at(0).label, complete_spp * complete_shadow},
                                               {configs.at(1).label, incomplete_spp * incomplete_shadow}};
-  // Seed 0's per-sample variance at equal rays: the unbiasedness check of the tests.
-  for (std::size_t i = 0; i < configs.size(); ++i)
-    section.numbers["equal_rays"]["rows"][configs[i].label]["sample_variance"] = mean_sample_variance(rays.images[0][i]);
-  double reference_variance = 0;
-  for (const double v : rays.reference.variance) reference_variance += v;
-  section.numbers["equal_rays"]["reference_variance"] =
-      rays.reference.variance.empty() ? 0.0 : reference_variance / double(rays.reference.variance.size());
 
   // The headline: which wins at equal time, the comparison that counts. With
   // the times resolved, by the efficiency ratio; with times that agree within
@@ -94,17 +87,17 @@ Section path_tracing_section(SectionContext& context) {
                                                  : "neither has a lower MSE beyond the noise";
   const std::string measure =
       at_time.time_resolved
-          ? fmt::format("the incomplete render's efficiency 1/(MSE × seconds) is {}× the complete one's",
-                        format_interval(at_time.efficiency_ratio))
+          ? fmt::format("the incomplete render's efficiency 1/(MSE × seconds) is {} the complete one's",
+                        format_factor(at_time.efficiency_ratio))
           : fmt::format("their times agree within ±{}%, and the MSE ratio complete/incomplete is {}",
                         format_number(noise_percent(at_time.time_ratio), 2), format_interval(at_time.mse_ratio));
   section.text.push_back(fmt::format(
       "At equal time, {}: {}. At equal ray count {} (ratio complete/incomplete {}), but that is not equal cost: the "
-      "incomplete render took {}× as long.",
+      "incomplete render took {} as long.",
       incomplete_wins  ? "incomplete path tracing wins"
       : complete_wins ? "complete path tracing wins"
                       : "neither wins beyond the noise",
-      measure, at_rays, format_interval(ray_mse), format_interval(ray_stats.at(1).time_ratio)));
+      measure, at_rays, format_interval(ray_mse), format_factor(ray_stats.at(1).time_ratio)));
   section.text.push_back(fmt::format(
       "The complete render spends {} shadow rays per pixel at the first hit ({} eye rays × {} shadow rays) and the "
       "incomplete one {} ({} × {}); the incomplete one also samples the pixel area and every later bounce {}× as "

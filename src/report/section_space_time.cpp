@@ -218,12 +218,7 @@ nlohmann::json time_assignment_numbers(const TimeAssignments& run, const std::ve
     row["time_dependent_mse_mean"] = run.local[i].mse.mean;
     row["time_dependent_mse_standard_error"] = run.local[i].mse.standard_error;
     row["time_dependent_mse_ratio"] = interval_json(run.local[i].mse_ratio);
-    // The first seed's per-sample variance: the unbiasedness check of the tests.
-    row["sample_variance"] = mean_sample_variance(comparison.images[0][i]);
   }
-  double sum = 0;
-  for (const double v : comparison.reference.variance) sum += v;
-  numbers["reference_variance"] = comparison.reference.variance.empty() ? 0.0 : sum / double(comparison.reference.variance.size());
   return numbers;
 }
 

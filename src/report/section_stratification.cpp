@@ -65,9 +65,11 @@ nlohmann::json finite(double value) { return std::isfinite(value) ? nlohmann::js
 std::string slope_text(const sa::SamplerConvergence& entry) {
   const sa::SlopeFit& fit = entry.slope;
   if (!std::isfinite(fit.slope)) return "n/a";
-  if (std::isfinite(entry.interval.low))
-    return format_number(fit.slope) + " (" + format_number(100 * entry.interval.confidence) + "% interval " +
-           format_number(entry.interval.low, 2) + " … " + format_number(entry.interval.high, 2) + ")";
+  if (std::isfinite(entry.interval.low)) {
+    const FormattedInterval text = format_alike(fit.slope, entry.interval.low, entry.interval.high);
+    return fmt::format("{} ({:g}% interval {} … {})", text.estimate, 100 * entry.interval.confidence, text.low,
+                       text.high);
+  }
   if (!std::isfinite(fit.slope_standard_error)) return format_number(fit.slope);
   return format_number(fit.slope) + " ± " + format_number(fit.slope_standard_error, 2) + " (fit)";
 }
@@ -249,13 +251,14 @@ Section stratification_section(SectionContext& context) {
   section.numbers["edge_variance_ratio_random_over_jittered"] = {
       {"estimate", variance_ratio}, {"low", variance_ratio / f_high}, {"high", variance_ratio / f_low}, {"confidence", 0.95}};
   const auto& jittered_edge = entry_of(edge, "jittered");
+  const FormattedInterval edge_ratio = format_alike(variance_ratio, variance_ratio / f_high, variance_ratio / f_low);
   section.text.push_back(fmt::format(
       "On the edge integrand 1[x < 1/π], the variance of jittered estimates falls with a fitted slope of {} "
       "(the lecture predicts −1.5: only the √N strata the edge crosses contribute) and that of random estimates "
       "with {} (predicted −1); at N = {} random's variance is {}× jittered's (95% interval {}–{}: the ratio of two "
       "sample variances of {} runs each over the F distribution's quantiles, for near-normal estimates).",
-      slope_text(jittered_edge), slope_text(random_edge), counts.back(), format_number(variance_ratio),
-      format_number(variance_ratio / f_high), format_number(variance_ratio / f_low), runs));
+      slope_text(jittered_edge), slope_text(random_edge), counts.back(), edge_ratio.estimate, edge_ratio.low,
+      edge_ratio.high, runs));
   const auto& sobol_edge = entry_of(edge, "sobol");
   const auto& pmj_edge = entry_of(edge, "pmj02");
   section.text.push_back(fmt::format(

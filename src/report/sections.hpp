@@ -24,6 +24,15 @@ Section four_views_section(SectionContext& context);      // §13 section_four_v
 /// exponent between 1e-3 and 1e6.
 std::string format_number(double value, int digits = 3);
 
+/// An estimate and its interval's bounds, printed alike: with the decimals
+/// that give the estimate `digits` significant digits (more where a bound
+/// would keep fewer than two), so that the three line up ("1.00 (0.98–1.02)");
+/// each by format_number where one lies outside its fixed-notation range.
+struct FormattedInterval {
+  std::string estimate, low, high;
+};
+FormattedInterval format_alike(double estimate, double low, double high, int digits = 3);
+
 // Words for the page (names.cpp).
 
 /// "sobol:owen" (or "sobol" when no randomizer is given).

@@ -56,8 +56,13 @@ MeanError mean_and_error(const std::vector<double>& values) {
 }
 
 std::string format_interval(const RatioInterval& interval) {
-  return fmt::format("{} ({:g}% CI {}–{})", format_number(interval.estimate), 100 * interval.confidence,
-                     format_number(interval.low), format_number(interval.high));
+  const FormattedInterval text = format_alike(interval.estimate, interval.low, interval.high);
+  return fmt::format("{} ({:g}% CI {}–{})", text.estimate, 100 * interval.confidence, text.low, text.high);
+}
+
+std::string format_factor(const RatioInterval& interval) {
+  const FormattedInterval text = format_alike(interval.estimate, interval.low, interval.high);
+  return fmt::format("{}× ({:g}% CI {}–{})", text.estimate, 100 * interval.confidence, text.low, text.high);
 }
 
 double noise_percent(const RatioInterval& interval) {

@@ -39,6 +39,9 @@ MeanError mean_and_error(const std::vector<double>& values);
 /// "1.23 (95% CI 1.10–1.38)".
 std::string format_interval(const RatioInterval& interval);
 
+/// "15.8× (95% CI 15.6–16.0)": the same as a factor, for running text.
+std::string format_factor(const RatioInterval& interval);
+
 /// The half-width of a ratio interval around 1, as a percentage: how far
 /// apart two timings may be and still be called equal ("±7%").
 double noise_percent(const RatioInterval& interval);

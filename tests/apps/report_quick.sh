@@ -79,6 +79,10 @@ space_time = numbers["sections"]["space-time"]["numbers"]
 for key in ("motion_blur", "motion_close_up"):
     check_repeated(space_time[key], key)
     assert 0 < space_time[key]["time_dependent_pixels"] <= space_time[key]["pixels"], key
+check_repeated(numbers["sections"]["variance"]["numbers"], "variance")
+importance = numbers["sections"]["importance"]["numbers"]
+for key in ("light_strategy", "light_strategy_large", "hemisphere"):
+    check_repeated(importance[key], key)
 path = numbers["sections"]["path-tracing"]["numbers"]
 check_repeated(path["equal_rays"], "equal_rays")
 check_repeated(path["equal_time"], "equal_time")

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "report/sections.hpp"
@@ -74,6 +75,43 @@ TEST(ReportFormat, SignificantDigitsAndExponents) {
   EXPECT_EQ(format_number(0.0), "0.00");
   EXPECT_EQ(format_number(-2.0 / 3.0), "-0.667");
   EXPECT_EQ(format_number(std::nan("")), "n/a");
+  // Rounding up to a power of ten keeps the significant digits: 0.99996 is
+  // 1.00 (not 1.000), 9.9996 is 10.0, 0.0099996 is 0.0100.
+  EXPECT_EQ(format_number(0.99996), "1.00");
+  EXPECT_EQ(format_number(-0.99996), "-1.00");
+  EXPECT_EQ(format_number(9.9996), "10.0");
+  EXPECT_EQ(format_number(0.0099996), "0.0100");
+  EXPECT_EQ(format_number(0.9994), "0.999");
+}
+
+TEST(ReportFormat, AnEstimateAndItsIntervalPrintedAlike) {
+  using stratum::report::format_alike;
+  // The estimate's decimals for all three (never "1.000 (1.000–1.00)").
+  auto text = format_alike(0.99996, 0.99991, 1.00002);
+  EXPECT_EQ(text.estimate, "1.00");
+  EXPECT_EQ(text.low, "1.00");
+  EXPECT_EQ(text.high, "1.00");
+  text = format_alike(1.0004, 0.981, 1.0203);
+  EXPECT_EQ(text.estimate, "1.00");
+  EXPECT_EQ(text.low, "0.98");
+  EXPECT_EQ(text.high, "1.02");
+  text = format_alike(-1.5123, -1.61, -1.4149);
+  EXPECT_EQ(text.estimate, "-1.51");
+  EXPECT_EQ(text.low, "-1.61");
+  EXPECT_EQ(text.high, "-1.41");
+  // More decimals where a bound would keep fewer than two significant digits.
+  text = format_alike(5.0, 0.0456, 55.1);
+  EXPECT_EQ(text.estimate, "5.000");
+  EXPECT_EQ(text.low, "0.046");
+  EXPECT_EQ(text.high, "55.100");
+  // Outside the fixed range each is its own: 3 significant digits.
+  text = format_alike(2.5e-5, 2.04e-5, 3.1e-5);
+  EXPECT_EQ(text.estimate, "2.50e-05");
+  EXPECT_EQ(text.low, "2.04e-05");
+  EXPECT_EQ(text.high, "3.10e-05");
+  text = format_alike(2.0, 1.0, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(text.high, "∞");
+  EXPECT_EQ(text.estimate, "2.00");
 }
 
 TEST(WriteReport, OneSectionIntoPlaceAndNoStagingLeft) {

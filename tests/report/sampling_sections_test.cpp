@@ -129,6 +129,9 @@ TEST(ReportSamplingSections, StratificationSlopesAndRandomVariances) {
   }
   // The sentence quotes the measured jittered slope.
   EXPECT_NE(run.section.text[0].find(format_number(slope("edge", "jittered:none"))), std::string::npos);
+  // … with its interval's level as a whole percentage ("95% interval", not "95.0%").
+  EXPECT_NE(run.section.text[0].find("(95% interval "), std::string::npos) << run.section.text[0];
+  for (const auto& text : run.section.text) EXPECT_EQ(text.find(".0% interval"), std::string::npos) << text;
   // latin-square makes only 3D points: validate_report_options refuses it before a report runs, and the
   // section, given it anyway, leaves it out and says so.
   EXPECT_FALSE(numbers.at("edge").at("samplers").contains("latin-square:none"));
