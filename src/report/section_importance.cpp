@@ -100,7 +100,7 @@ render::ComparisonScene sky_objects_scene(int width, int height) {
   light.radiance = {1, 1, 1};
   scene.lights.push_back(light);
   render::validate_scene(scene);
-  return {scene, render::scene_fingerprint(scene)};
+  return {scene, render::scene_fingerprint(scene), ""};
 }
 
 double image_mean(const render::Image& image) {
