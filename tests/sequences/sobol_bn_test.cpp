@@ -16,25 +16,12 @@
 #ifdef STRATUM_HAS_RENDER
 #include "stratum/render/pixel_sampler.hpp"
 #endif
+#include "zero_net.hpp"
 
 namespace {
 
 using stratum::SobolBn;
-
-bool is_zero_net(const std::vector<std::array<double, 2>>& points) {
-  const std::size_t n = points.size();
-  const int m = std::countr_zero(n);
-  for (int a = 0; a <= m; ++a) {
-    std::vector<int> count(n, 0);
-    for (const auto& p : points) {
-      const auto i = static_cast<std::size_t>(p[0] * double(1u << a)), j = static_cast<std::size_t>(p[1] * double(1u << (m - a)));
-      ++count[i * (std::size_t(1) << (m - a)) + j];
-    }
-    for (int c : count)
-      if (c != 1) return false;
-  }
-  return true;
-}
+using stratum::testing::is_zero_net;
 
 TEST(SobolBn, EachPixelIsANetInEveryPair) {
   for (std::uint64_t spp : {1u, 2u, 4u, 8u, 16u, 64u, 256u}) {
