@@ -64,10 +64,10 @@ double strategy_variance(const Setup& s, bool light, const Weight& weight) {
   return second - first * first;
 }
 
+/// The weight of a strategy's sample, equal sample counts on both sides
+/// (the heuristics of estimators/mis.hpp, which the measured runs use too).
 double heuristic_weight(double self, double other, bool power, double beta) {
-  if (!power) return self / (self + other);
-  const double a = std::pow(self, beta), b = std::pow(other, beta);
-  return a / (a + b);
+  return power ? estimators::power_heuristic(1, self, 1, other, beta) : estimators::balance_heuristic(1, self, 1, other);
 }
 
 /// One replicate's mean and per-sample variance.

@@ -41,17 +41,24 @@ std::string place(const std::string& text, std::size_t at) {
   return out;
 }
 
+/// The byte of the quote that closes the string opened at `open` (escaped
+/// characters skipped), or text.size() when it is never closed: the two
+/// scanners below skip strings with it.
+std::size_t string_end(const std::string& text, std::size_t open) {
+  for (std::size_t i = open + 1; i < text.size(); ++i) {
+    if (text[i] == '\\') ++i;
+    else if (text[i] == '"') return i;
+  }
+  return text.size();
+}
+
 /// The byte where nesting first exceeds `max_depth`, or npos (strings skipped).
 std::size_t too_deep(const std::string& text, std::size_t max_depth) {
   std::size_t depth = 0;
-  bool in_string = false;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
-    if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
-    } else if (c == '"') {
-      in_string = true;
+    if (c == '"') {
+      i = string_end(text, i);
     } else if (c == '[' || c == '{') {
       if (++depth > max_depth) return i;
     } else if ((c == ']' || c == '}') && depth > 0) {
@@ -64,14 +71,10 @@ std::size_t too_deep(const std::string& text, std::size_t max_depth) {
 /// The first number of `text` (outside strings) that overflows a double
 /// (1e999): its byte and its text; npos when none does.
 std::pair<std::size_t, std::string> overflowing_number(const std::string& text) {
-  bool in_string = false;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
-    if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
-    } else if (c == '"') {
-      in_string = true;
+    if (c == '"') {
+      i = string_end(text, i);
     } else if (c == '-' || (c >= '0' && c <= '9')) {
       std::size_t end = i + 1;
       while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) || text[end] == '.' ||
