@@ -26,7 +26,7 @@ struct RenderOptions {
   std::string scene, output = "render.png", exr, variance, cache = ".stratum-cache";
   render::RenderSettings settings;
   SamplerOptions sampler{"sobol"};
-  std::int64_t spp = 16, reference_spp = 1024;
+  std::int64_t spp = 16, reference_spp = 1024, frame = 0;
   std::optional<std::int64_t> width, height;  ///< given: overrides the scene's
   bool quiet = false, reference = false;
 };
@@ -37,6 +37,9 @@ void run_render(RenderOptions& options) {
   render::set_pixel_sampler(options.settings.sampler, "sampler", options.sampler.sampler, options.sampler.params,
                             options.sampler.randomize);
   options.settings.sampler.seed = options.sampler.seed;
+  require(options.frame >= 0 && options.frame <= std::int64_t{0xffffffff}, "frame", options.frame,
+          "must be an integer in [0, 2^32 - 1] with (frame + 1) * spp <= 2^32");
+  options.settings.sampler.frame = static_cast<std::uint32_t>(options.frame);
   render::validate_settings(options.settings);
   // Each given size overrides the scene's (as stratum.render's width= and height=); 0 is not "unset".
   for (const auto& [name, size] : {std::pair{"width", options.width}, std::pair{"height", options.height}})
@@ -120,6 +123,10 @@ void add_render_command(CLI::App& app) {
                       "seed")
       ->capture_default_str();
   command->add_option("--time-pattern", s.sampler.time_pattern, "random|cook|magic-square (spp = m^2)");
+  command->add_option("--frame", options->frame,
+                      "animation frame K: continues each pixel's sequence (samples K*spp..) for a progressive "
+                      "sampler, a fresh seed otherwise (docs/render.md)")
+      ->capture_default_str();
   add_threads_option(*command, s.threads, "threads");
   command->add_option("--passes", s.passes, "progressive passes")->capture_default_str();
   command->add_option("--time-limit", s.time_limit, "seconds; stops after the pass that reaches it (0: none)");

@@ -92,7 +92,7 @@ void bind_render(py::module_& m) {
          std::uint32_t light_samples, const std::string& light_strategy, const std::string& hemisphere,
          std::uint32_t max_depth, const std::string& sampler, const std::string& randomize,
          const std::string& time_pattern, std::uint64_t seed, unsigned threads, std::uint32_t passes,
-         bool pixel_centers, std::uint32_t reference_spp, const std::string& cache) {
+         bool pixel_centers, std::uint32_t reference_spp, const std::string& cache, std::uint32_t frame) {
         render::RenderSettings s;
         s.integrator = integrator;
         s.light_samples = light_samples;
@@ -101,6 +101,7 @@ void bind_render(py::module_& m) {
         s.max_depth = max_depth;
         s.sampler = render::PixelSamplerSettings{sampler, randomize, seed, spp, time_pattern};
         render::set_pixel_sampler(s.sampler, "sampler", sampler, {}, randomize);
+        s.sampler.frame = frame;
         s.threads = threads;
         s.passes = passes;
         s.pixel_centers = pixel_centers;
@@ -109,7 +110,7 @@ void bind_render(py::module_& m) {
       py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("spp"), py::arg("integrator"),
       py::arg("light_samples"), py::arg("light_strategy"), py::arg("hemisphere"), py::arg("max_depth"),
       py::arg("sampler"), py::arg("randomize"), py::arg("time_pattern"), py::arg("seed"), py::arg("threads"),
-      py::arg("passes"), py::arg("pixel_centers"), py::arg("reference_spp"), py::arg("cache"));
+      py::arg("passes"), py::arg("pixel_centers"), py::arg("reference_spp"), py::arg("cache"), py::arg("frame"));
   m.def(
       "compare",
       [](const std::string& scene, const std::string& builtin, const std::string& configs, std::uint32_t reference_spp,

@@ -57,7 +57,7 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
            light_samples: int = 1, light_strategy: str = "area", hemisphere: str = "cosine", sampler: str = "sobol",
            randomize: str | None = None, time_pattern: str | None = None, seed: int = 0, threads: int = 1,
            pixel_centers: bool = False, max_depth: int = 5, passes: int = 4, with_variance: bool = False,
-           reference: bool = False, reference_spp: int = 1024, cache=".stratum-cache"):
+           reference: bool = False, reference_spp: int = 1024, cache=".stratum-cache", frame: int = 0):
     """Renders `scene` (a JSON scene file, docs/scenes.md; None: the built-in
     Cornell box) and returns the linear image as float64 of shape
     (height, width, 3), top row first.
@@ -66,7 +66,10 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
     (image, variance): the variance of each pixel's mean per channel (the
     samples taken as independent). reference=True returns the converged
     reference of this estimand instead (reference_spp Owen-scrambled Sobol'
-    samples), loaded from or stored in the folder `cache`.
+    samples), loaded from or stored in the folder `cache`. frame=K renders
+    frame K of an animation: a progressive sampler (sobol, halton, pmj02,
+    random, ...) continues each pixel's sequence (samples K*spp onwards, so
+    frames 0..K-1 together are one frame at K*spp); others take a fresh seed.
     Raises stratum.InvalidArgument naming the argument at fault."""
     if not isinstance(pixel_centers, bool):
         raise _error("pixel_centers", pixel_centers, "must be True or False")
@@ -80,7 +83,8 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
         _text("light_strategy", light_strategy), _text("hemisphere", hemisphere), _count("max_depth", max_depth, 1, 1024),
         _text("sampler", sampler), _text("randomize", randomize, True), _text("time_pattern", time_pattern, True),
         _seed(seed), _checks.threads(threads), _count("passes", passes), pixel_centers,
-        _count("reference_spp", reference_spp) if reference else 0, _path("cache", cache))
+        _count("reference_spp", reference_spp) if reference else 0, _path("cache", cache),
+        _count("frame", frame, 0, 2**32 - 1))
     if with_variance:
         if variance is None:
             raise _error("with_variance", True, f"the cached reference in {cache} has no variance image")

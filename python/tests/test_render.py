@@ -75,6 +75,17 @@ def test_same_seed_same_image_for_any_thread_count():
     assert not np.array_equal(a, c)
 
 
+def test_frames_of_a_progressive_sampler_together_are_one_frame_at_k_times_spp():
+    frames = [stratum.render(width=8, height=8, spp=2, sampler="halton", passes=1, frame=k) for k in range(3)]
+    whole = stratum.render(width=8, height=8, spp=6, sampler="halton", passes=1)
+    np.testing.assert_allclose(np.mean(frames, axis=0), whole, rtol=1e-12, atol=1e-12)
+    np.testing.assert_array_equal(frames[0], stratum.render(width=8, height=8, spp=2, sampler="halton", passes=1))
+    assert not np.array_equal(frames[0], frames[1])
+    # Not progressive: a fresh seed per frame.
+    jittered = [stratum.render(width=8, height=8, spp=4, sampler="jittered", frame=k) for k in range(2)]
+    assert not np.array_equal(*jittered)
+
+
 def test_reference_is_cached(tmp_path):
     first = stratum.render(width=10, height=8, reference=True, reference_spp=16, cache=tmp_path / "cache")
     second = stratum.render(width=10, height=8, reference=True, reference_spp=16, cache=tmp_path / "cache")
@@ -102,6 +113,9 @@ def test_compare_at_equal_samples_and_equal_time(tmp_path):
     (lambda: stratum.render(light_strategy="cone", width=4, height=4), "light-strategy"),
     (lambda: stratum.render(sampler="no-such", width=4, height=4), "sampler"),
     (lambda: stratum.render(seed=-1), "seed"),
+    (lambda: stratum.render(frame=-1), "frame"),
+    (lambda: stratum.render(frame=1.5), "frame"),
+    (lambda: stratum.render(spp=16, frame=2**28, width=4, height=4), "frame"),
     (lambda: stratum.render("/no/such/scene.json"), "scene"),
     (lambda: stratum.compare(builtin="nope"), "comparison"),
     (lambda: stratum.compare(configs=[{"colour": 1}], width=4, height=4), "colour"),

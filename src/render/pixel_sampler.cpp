@@ -24,6 +24,7 @@ const Sobol& PixelSampler::sobol_2d() {
 namespace {
 constexpr std::uint64_t tag_pixel = 0x5049'5845'4cULL;  // random-stream tags
 constexpr std::uint64_t tag_time = 0x5449'4d45ULL;
+constexpr std::uint64_t tag_frame = 0x4652'414d'45ULL;
 
 }  // namespace
 
@@ -39,6 +40,10 @@ std::uint64_t PixelSampler::array_seed_for_test(std::uint64_t seed, std::uint32_
 
 PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(settings)) {
   require(settings_.spp >= 1, "spp", settings_.spp, "must be a positive integer");
+  const std::uint64_t max_frame = (std::uint64_t{1} << 32) / settings_.spp - 1;
+  require(settings_.frame <= max_frame, "frame", settings_.frame,
+          "must be in [0, " + std::to_string(max_frame) + "] at spp " + std::to_string(settings_.spp) +
+              " ((frame + 1) * spp <= 2^32)");
   if (!settings_.time_pattern.empty()) {
     if (settings_.time_pattern == "random") spacetime_ = "spacetime-random";
     else if (settings_.time_pattern == "cook") spacetime_ = "spacetime-cook";
@@ -54,6 +59,10 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   draw(settings_.sampler, settings_.spp, 2, 0);  // validates the sampler, randomizer and spp
   const std::string& r = settings_.randomize;
   const std::string& name = settings_.sampler;
+  const std::vector<std::string>& properties = find_sampler(name).properties;
+  const bool progressive = std::find(properties.begin(), properties.end(), "progressive") != properties.end();
+  offset_ = progressive ? std::uint64_t{settings_.frame} * settings_.spp : 0;
+  seed_ = progressive || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   if (name == "random" && (r.empty() || r == "none")) fast_ = Fast::random;
   if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;
   if (name == "jittered" && (r.empty() || r == "none")) fast_ = Fast::jittered;
@@ -61,12 +70,12 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   halton_permute_ = name == "halton" && (r.empty() || r == "permute");
   has_spacetime_ = !spacetime_.empty();
   if (fast_ == Fast::sobol_owen_hash) sobol_ = &sobol_2d();
-  halton_direct_ = halton_permute_ && settings_.spp <= halton_direct_max;
+  halton_direct_ = halton_permute_ && offset_ + settings_.spp <= halton_direct_max;
   if (halton_permute_)
     for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
-  if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, settings_.seed);
-  if (name == "sobol-bn") sobol_bn_.emplace(default_blue_noise_table(), settings_.spp, settings_.seed);
+  if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, seed_);
+  if (name == "sobol-bn") sobol_bn_.emplace(default_blue_noise_table(), settings_.spp, seed_);
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
@@ -75,6 +84,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
   halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
+  seed_ = other.seed_, offset_ = other.offset_;
   zsobol_ = other.zsobol_, zsobol_pairs_ = other.zsobol_pairs_;
   sobol_bn_ = other.sobol_bn_, sobol_bn_shared_ = other.sobol_bn_shared_;
 }
@@ -138,16 +148,17 @@ bool PixelSampler::direct_for(std::uint64_t n) const noexcept {
   return k * k == n;  // otherwise the registry names the bad count
 }
 
-PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed) const {
+PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
+                            std::uint64_t start) const {
   // Direct paths, bit-identical to the registry's (tested): the registry call
   // validates and sets up bulk generation, microseconds per call, which
   // dominates when drawing a few points per pixel and dimension.
   if (sampler == settings_.sampler && d == 2) {
-    // The n-point 2D set whose point i is point(i).
-    const auto set_of = [n](auto point) {
+    // The n-point 2D set whose point i is point(start + i).
+    const auto set_of = [n, start](auto point) {
       PointSet points{n, 2, std::make_unique<double[]>(n * 2)};
       for (std::uint64_t i = 0; i < n; ++i) {
-        const std::array<double, 2> p = point(i);
+        const std::array<double, 2> p = point(start + i);
         points.data[2 * i] = p[0], points.data[2 * i + 1] = p[1];
       }
       return points;
@@ -156,16 +167,16 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
       const std::uint64_t root = integer_root(n, 2);
       return set_of([&](std::uint64_t i) { return direct_point(seed, root, i); });
     }
-    if (halton_permute_ && n <= halton_direct_max) {
+    if (halton_permute_ && start + n <= halton_direct_max) {
       HaltonSet set;
-      build_halton_set(seed, n, set);
+      build_halton_set(seed, start + n, set);
       return set_of([&](std::uint64_t i) { return halton_point(set, i); });
     }
     if (halton_permute_) {
       // The registry's scrambler for these bases and indices, without its
       // request handling: each point straight from RandomDigitPermutations
       // (sample() equals the registry's tabulated fill bit for bit).
-      const RandomDigitPermutations permutations(seed, {2, 3}, n - 1);
+      const RandomDigitPermutations permutations(seed, {2, 3}, start + n - 1);
       return set_of([&](std::uint64_t i) { return std::array{permutations.sample(i, 0), permutations.sample(i, 1)}; });
     }
   }
@@ -173,13 +184,14 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
   request.n = n;
   request.d = d;
   request.seed = seed;
+  request.start = start;
   request.randomize = sampler == settings_.sampler ? settings_.randomize : "";
   return generate_points(sampler, request);
 }
 
 void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uint32_t index) {
   if (first_pixel_ || x != pixel_x_ || y != pixel_y_) {
-    const std::uint64_t key = hash64(settings_.seed, tag_pixel, x, y);
+    const std::uint64_t key = hash64(seed_, tag_pixel, x, y);
     pixel_key_ = key, pixel_x_ = x, pixel_y_ = y;
     first_pixel_ = false;
     ++pixel_stamp_;  // zsobol's per-pixel digits are stale
@@ -188,16 +200,19 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     dimension_valid_ = array_valid_ = 0;
     for (auto& set : sets_) set.n = 0;  // stale: redrawn on first use
     for (auto& set : halton_sets_) set.coordinates = 0;
-    if (!spacetime_.empty()) spacetime_set_ = draw(spacetime_, settings_.spp, 3, hash64(key, tag_time));
+    // A frame's own time pattern also where the pixel key is every frame's (progressive samplers).
+    const std::uint64_t time_seed = settings_.frame == 0 ? hash64(key, tag_time) : hash64(key, tag_time, settings_.frame);
+    if (!spacetime_.empty()) spacetime_set_ = draw(spacetime_, settings_.spp, 3, time_seed);
   }
   index_ = index < settings_.spp ? index : index % settings_.spp;  // no division in the usual case
+  sequence_index_ = offset_ + index_;
   dimension_ = 0;
 }
 
 const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   if (sets_.size() <= dimension) sets_.resize(dimension + 1);
   PointSet& set = sets_[dimension];
-  if (set.n == 0) set = draw(settings_.sampler, settings_.spp, 2, hash64(pixel_key_, dimension));
+  if (set.n == 0) set = draw(settings_.sampler, settings_.spp, 2, hash64(pixel_key_, dimension), offset_);
   return set;
 }
 
@@ -215,8 +230,9 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
     const std::uint32_t dimension = dimension_++;
     if (halton_sets_.size() <= dimension) halton_sets_.resize(dimension + 1);
     HaltonSet& set = halton_sets_[dimension];
-    if (set.coordinates < coordinates) build_halton_set(hash64(pixel_key_, dimension), settings_.spp, set, coordinates);
-    return halton_point(set, index_);
+    if (set.coordinates < coordinates)
+      build_halton_set(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
+    return halton_point(set, sequence_index_);
   }
   const PointSet& set = set_for(dimension_++);
   return {set(index_, 0), set(index_, 1)};

@@ -28,6 +28,16 @@ expect_error "time-pattern magic-square needs spp" render --time-pattern magic-s
 expect_error "width" render --width 100000 --height 10 -o "$tmp/x.png"
 expect_error "output" render --width 8 --height 8 --spp 1 -o "$tmp/no/such/dir/x.png"
 expect_error "output" render --width 8 --height 8 --spp 1 -o "$tmp/x.unknownformat"
+# --frame: frame 0 is the render without frames; frame 1 continues the pixels' sequences (other samples).
+"$stratum" render --width 8 --height 8 --spp 2 -q -o "$tmp/f.png" && "$stratum" render --width 8 --height 8 --spp 2 -q \
+  --frame 0 -o "$tmp/f0.png" && "$stratum" render --width 8 --height 8 --spp 2 -q --frame 1 -o "$tmp/f1.png" && ok \
+  || fail "render --frame"
+cmp -s "$tmp/f.png" "$tmp/f0.png" && ok || fail "--frame 0 differs from the render without --frame"
+! cmp -s "$tmp/f0.png" "$tmp/f1.png" && ok || fail "--frame 1 rendered frame 0's samples"
+rm -f "$tmp"/f*.png
+expect_error "frame = -1" render --frame -1 -o "$tmp/x.png"
+expect_error "frame = 268435456: must be in \[0, 268435455\] at spp 16" render --spp 16 --frame 268435456 -o "$tmp/x.png"
+expect_error "frame" render --frame 4294967296 -o "$tmp/x.png"
 [ ! -e "$tmp/x.png" ] && ok || fail "a failed render left x.png"
 [ -z "$(ls -A "$tmp" | grep '^\.')" ] && ok || fail "temporary files left: $(ls -A "$tmp")"
 

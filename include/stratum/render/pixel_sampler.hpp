@@ -13,6 +13,16 @@
 /// sample index, so the n shadow rays of one eye ray are stratified among
 /// themselves (LECTURE.md §2).
 ///
+/// Frames (LECTURE.md §8, issue "blue-noise error in screen space and
+/// time"): frame K of an animation continues each pixel's sequence. For a
+/// progressive sampler (registry property "progressive": every prefix of its
+/// randomized sequence is its set, e.g. sobol, halton, pmj02, random) frame K
+/// takes the pixel's samples K·spp … (K+1)·spp − 1, so frames 0…K−1 together
+/// are exactly the samples of one frame at K·spp, and consecutive frames are
+/// stratified against each other; any other sampler (a pattern, zsobol,
+/// sobol-bn) draws frame K from seed hash(seed, K): independent frames. Frame
+/// 0 is the render without frames, bit for bit.
+///
 /// Time (LECTURE.md §8): with a time pattern (random, cook, magic-square),
 /// film positions and times come together from the space-time sampler
 /// spacetime-<pattern> (spp = m² strata, one time slot each); without one,
@@ -56,6 +66,7 @@ struct PixelSamplerSettings {
   /// The image's larger side in pixels (render() sets it): zsobol orders the
   /// pixels along a Morton curve of this size. 0: one pixel.
   std::uint32_t resolution = 0;
+  std::uint32_t frame = 0;  ///< the animation frame (see above); (frame + 1) · spp ≤ 2^32
 };
 
 class PixelSampler {
@@ -73,11 +84,11 @@ class PixelSampler {
   // The draws: the direct paths inline (a few per camera ray, where a call
   // and a switch cost as much as the hashing), the others out of line.
   double get_1d() {
-    if (fast_ != Fast::none) return keyed_point<1>(dimension_key(dimension_++), spp_root_, index_)[0];
+    if (fast_ != Fast::none) return keyed_point<1>(dimension_key(dimension_++), spp_root_, sequence_index_)[0];
     return get_2d_slow(1)[0];
   }
   std::array<double, 2> get_2d() {
-    if (fast_ != Fast::none) return keyed_point<2>(dimension_key(dimension_++), spp_root_, index_);
+    if (fast_ != Fast::none) return keyed_point<2>(dimension_key(dimension_++), spp_root_, sequence_index_);
     return get_2d_slow();
   }
   /// The film position within the pixel, in [0,1)².
@@ -92,8 +103,8 @@ class PixelSampler {
   }
   /// n points stratified among themselves (n must be a count the sampler takes).
   void get_2d_array(std::uint32_t n, std::array<double, 2>* out) {
-    // seed = hash64(pixel_key_, tag_array, dimension, index_)
-    const std::uint64_t seed = hash64_extend(array_prefix(dimension_++), index_);
+    // seed = hash64(pixel_key_, tag_array, dimension, sequence_index_)
+    const std::uint64_t seed = hash64_extend(array_prefix(dimension_++), sequence_index_);
     if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
     switch (fast_) {
       case Fast::random: return keyed_points<Fast::random>(set_key(seed), array_root_, n, out);
@@ -125,7 +136,8 @@ class PixelSampler {
 
  private:
   const PointSet& set_for(std::uint32_t dimension);
-  PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed) const;
+  /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
+  PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed, std::uint64_t start = 0) const;
   /// get_2d off the direct paths; `coordinates` 1: only the first is used.
   std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
   void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::array<double, 2>* out);
@@ -199,7 +211,7 @@ class PixelSampler {
   void build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set, unsigned coordinates = 2) const noexcept;
   /// Point `index` of a built set (its first `set.coordinates` coordinates; the others 0).
   static std::array<double, 2> halton_point(const HaltonSet& set, std::uint64_t index) noexcept;
-  bool halton_direct_ = false;  ///< halton_permute_ and spp ≤ halton_direct_max
+  bool halton_direct_ = false;  ///< halton_permute_ and offset_ + spp ≤ halton_direct_max
   std::vector<HaltonSet> halton_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
   std::vector<unsigned __int128> halton_weights_[2];  ///< W_j of bases 2 and 3 (digits.hpp)
 
@@ -320,7 +332,12 @@ class PixelSampler {
   std::uint64_t spp_root_ = 0;               ///< ⌊√spp⌋ (jittered's strata per axis)
   std::uint32_t array_n_ = 0;                ///< the last get_2d_array count …
   std::uint64_t array_root_ = 0;             ///< … and ⌊√n⌋
-  std::uint32_t index_ = 0;
+  /// The frame's seed: settings_.seed for frame 0 and for progressive
+  /// samplers, hash(seed, frame) otherwise; and the index of the frame's
+  /// first sample in each pixel's sequence (frame · spp for progressive samplers, else 0).
+  std::uint64_t seed_ = 0, offset_ = 0;
+  std::uint32_t index_ = 0;           ///< the sample within the frame, < spp
+  std::uint64_t sequence_index_ = 0;  ///< offset_ + index_: the sample in the pixel's sequence
   std::uint32_t dimension_ = 0;
   std::vector<PointSet> sets_;  ///< this pixel's point sets, by dimension (cache)
   PointSet spacetime_set_;

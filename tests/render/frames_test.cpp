@@ -1,0 +1,164 @@
+// Animation frames (PixelSamplerSettings::frame, issue "blue-noise error in
+// screen space and time"): a progressive sampler's frame K continues each
+// pixel's sequence, so frames 0..K-1 are exactly one frame at K·spp; other
+// samplers take a fresh seed per frame, and their frames' errors are
+// uncorrelated.
+#include <gtest/gtest.h>
+
+#include <boost/math/distributions/normal.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "stratum/render/pixel_sampler.hpp"
+#include "stratum/render/render.hpp"
+#include "stratum/render/scene.hpp"
+#include "stratum/util/error.hpp"
+
+namespace stratum::render {
+namespace {
+
+PixelSamplerSettings sampler_settings(const std::string& sampler, std::uint32_t spp, std::uint32_t frame) {
+  PixelSamplerSettings s;
+  s.sampler = sampler;
+  s.spp = spp;
+  s.seed = 11;
+  s.frame = frame;
+  s.resolution = 8;
+  return s;
+}
+
+/// What a pixel's sample draws: two get_2d, a get_1d and a 4-point array.
+std::vector<double> draws(PixelSampler& sampler, std::uint32_t x, std::uint32_t y, std::uint32_t index) {
+  sampler.start_pixel_sample(x, y, index);
+  std::vector<double> out;
+  for (int k = 0; k < 2; ++k)
+    for (double v : sampler.get_2d()) out.push_back(v);
+  out.push_back(sampler.get_1d());
+  std::array<double, 2> array[4];
+  sampler.get_2d_array(4, array);
+  for (const auto& p : array) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+const std::vector<std::string> progressive = {"sobol", "halton", "pmj02", "random", "kronecker", "lattice-sequence",
+                                              "faure", "zero-two"};
+
+TEST(Frames, AProgressiveSamplersFrameKIsItsSamplesKTimesSppOnward) {
+  // Halton at frame 150 of 16 spp starts at sample 2400, past the direct
+  // path's 2187: both of its paths are checked.
+  for (const std::string& name : progressive)
+    for (const auto [spp, frame] : {std::pair{4u, 3u}, std::pair{16u, 150u}}) {
+      PixelSampler framed(sampler_settings(name, spp, frame));
+      PixelSampler whole(sampler_settings(name, spp * (frame + 1), 0));
+      for (std::uint32_t i = 0; i < spp; ++i)
+        EXPECT_EQ(draws(framed, 2, 5, i), draws(whole, 2, 5, frame * spp + i)) << name << " spp " << spp << " frame " << frame;
+    }
+}
+
+TEST(Frames, OtherSamplersTakeAFreshSetPerFrameThatKeepsItsStrata) {
+  for (const std::string name : {"jittered", "zsobol", "sobol-bn", "n-rooks"}) {
+    PixelSampler first(sampler_settings(name, 16, 0)), second(sampler_settings(name, 16, 1));
+    std::vector<std::array<double, 2>> a, b;
+    for (std::uint32_t i = 0; i < 16; ++i) {
+      first.start_pixel_sample(3, 4, i), second.start_pixel_sample(3, 4, i);
+      a.push_back(first.get_2d()), b.push_back(second.get_2d());
+    }
+    EXPECT_NE(a, b) << name;
+    // Each frame's set is still one point per 1/16 column (jittered: per 4×4 cell; all: Latin or finer).
+    for (const auto* set : {&a, &b}) {
+      std::vector<int> columns(16, 0);
+      for (const auto& p : *set) ++columns[std::size_t(p[0] * 16)];
+      if (name != "jittered") EXPECT_EQ(columns, std::vector<int>(16, 1)) << name;
+      std::vector<int> cells(16, 0);
+      for (const auto& p : *set) ++cells[std::size_t(p[0] * 4) * 4 + std::size_t(p[1] * 4)];
+      if (name != "n-rooks") EXPECT_EQ(cells, std::vector<int>(16, 1)) << name;
+    }
+  }
+}
+
+TEST(Frames, FramesOfAProgressiveSamplerAveragedAreOneRenderAtKTimesSpp) {
+  Scene scene = cornell_box();
+  scene.camera.width = scene.camera.height = 12;
+  for (const std::string name : {"sobol", "halton", "kronecker"}) {
+    RenderSettings s;
+    s.integrator = "path";
+    s.light_samples = 2;
+    s.passes = 1;
+    s.sampler = sampler_settings(name, 4, 0);
+    std::vector<double> mean;
+    constexpr std::uint32_t frames = 4;
+    for (std::uint32_t k = 0; k < frames; ++k) {
+      s.sampler.frame = k;
+      const Image frame = render(scene, s);
+      if (mean.empty()) mean.assign(frame.rgb.size(), 0.0);
+      for (std::size_t i = 0; i < mean.size(); ++i) mean[i] += frame.rgb[i] / frames;
+    }
+    s.sampler.frame = 0;
+    s.sampler.spp = 4 * frames;
+    const Image whole = render(scene, s);
+    ASSERT_EQ(whole.rgb.size(), mean.size());
+    // The same samples, summed in another order: equal to rounding.
+    for (std::size_t i = 0; i < mean.size(); ++i)
+      ASSERT_NEAR(mean[i], whole.rgb[i], 1e-12 * std::max(1.0, std::abs(whole.rgb[i]))) << name << " value " << i;
+  }
+}
+
+/// Pearson's correlation of the two frames' per-pixel errors (luminance
+/// against a 1024-spp reference) at 1 spp on the penumbra scene.
+double error_correlation(const std::string& sampler, std::uint32_t frame_a, std::uint32_t frame_b, std::size_t* pixels) {
+  Scene scene = penumbra_scene();
+  scene.camera.width = scene.camera.height = 32;
+  RenderSettings s;
+  s.passes = 1;
+  s.sampler = sampler_settings("sobol", 1024, 0);
+  s.sampler.seed = 99;
+  const Image reference = render(scene, s);
+  s.sampler = sampler_settings(sampler, 1, frame_a);
+  const Image a = render(scene, s);
+  s.sampler.frame = frame_b;
+  const Image b = render(scene, s);
+  const auto luminance = [](const std::vector<double>& rgb, std::size_t p) {
+    return 0.2126 * rgb[3 * p] + 0.7152 * rgb[3 * p + 1] + 0.0722 * rgb[3 * p + 2];
+  };
+  const std::size_t n = reference.rgb.size() / 3;
+  double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const double ea = luminance(a.rgb, p) - luminance(reference.rgb, p);
+    const double eb = luminance(b.rgb, p) - luminance(reference.rgb, p);
+    sa += ea, sb += eb, saa += ea * ea, sbb += eb * eb, sab += ea * eb;
+  }
+  *pixels = n;
+  const double cov = sab / n - (sa / n) * (sb / n);
+  return cov / std::sqrt((saa / n - (sa / n) * (sa / n)) * (sbb / n - (sb / n) * (sb / n)));
+}
+
+TEST(Frames, ConsecutiveFramesErrorsAreNotPositivelyCorrelated) {
+  // Fresh seeds (random's continued stream, jittered's and zsobol's new seed):
+  // independent frames, |ρ|·√n ~ |N(0,1)|. Owen–Sobol' continued: samples 0
+  // and 1 of each pixel's (0,2)-sequence lie in opposite halves, so the errors
+  // are negatively correlated, never positively. Two-sided z at α = 0.001,
+  // Bonferroni over the 4 samplers (the reference's own error adds ρ ≈ +0.001).
+  const double z = boost::math::quantile(boost::math::normal(), 1 - 0.001 / 4 / 2);
+  for (const std::string name : {"random", "jittered", "zsobol", "sobol"}) {
+    std::size_t n = 0;
+    const double rho = error_correlation(name, 4, 5, &n);
+    const double scaled = rho * std::sqrt(double(n));
+    if (name == "sobol") EXPECT_LT(scaled, z) << name << " rho " << rho;
+    else EXPECT_LT(std::abs(scaled), z) << name << " rho " << rho;
+  }
+}
+
+TEST(Frames, AFrameBeyondTwoToThe32SamplesIsRefusedByName) {
+  EXPECT_NO_THROW(PixelSampler(sampler_settings("sobol", 16, (1u << 28) - 1)));
+  try {
+    PixelSampler sampler(sampler_settings("sobol", 16, 1u << 28));
+    FAIL() << "frame 2^28 at 16 spp accepted";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("frame"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("268435455"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace stratum::render
