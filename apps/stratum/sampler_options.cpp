@@ -135,6 +135,15 @@ void check_subcommand_names(const CLI::App& app, int argc, const char* const* ar
     }
     at = next;
   }
+  // Every word was a subcommand name and the last one needs a subcommand of
+  // its own (bare `stratum`, `stratum study`): say which, not CLI11's "A subcommand is required".
+  const auto commands = at->get_subcommands([](const CLI::App*) { return true; });
+  if (commands.empty()) return;
+  std::string names, path;
+  for (const CLI::App* command : commands) names += (names.empty() ? "" : ", ") + command->get_name();
+  for (int i = 1; i < argc; ++i) path += std::string(" ") + argv[i];
+  throw usage_error("give a subcommand" + (at == &app ? std::string() : " of " + at->get_name()) + ": one of " + names +
+                    " (stratum" + path + " SUBCOMMAND --help for its options)");
 }
 
 }  // namespace stratum::cli

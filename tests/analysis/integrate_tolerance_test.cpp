@@ -36,7 +36,9 @@ TEST(IntegrateToTolerance, DoublesUntilTheFirstStepThatMeetsItsTarget) {
     EXPECT_EQ(result.steps[k].n, std::uint64_t{16} << k);
     EXPECT_EQ(result.steps[k].target, 1e-4);
     // Every step but the last missed the target; the last met it.
-    if (k + 1 < result.steps.size()) EXPECT_GT(result.steps[k].half_width, 1e-4) << k;
+    if (k + 1 < result.steps.size()) {
+      EXPECT_GT(result.steps[k].half_width, 1e-4) << k;
+    }
   }
   EXPECT_LE(result.steps.back().half_width, 1e-4);
   // The last step is integrate() at its n, bit for bit.

@@ -32,6 +32,10 @@ expect_error "unknown subcommand 'foo': valid subcommands are samplers, describe
 expect_status 2 foo
 expect_error "unknown subcommand 'foo' of study: valid subcommands are mitchell, dimension, importance" study foo
 expect_error "unknown subcommand 'latin-square'" latin-square -n 4
+# Without a subcommand: which ones there are (not CLI11's bare "A subcommand is required"), exit 2.
+expect_error "stratum: error: give a subcommand: one of samplers, describe, points"
+expect_status 2
+expect_error "give a subcommand of study: one of mitchell, dimension, importance, mis (stratum study SUBCOMMAND --help" study
 expect_status 2 points --no-such-option
 expect_status 0 --version
 

@@ -195,7 +195,9 @@ TEST(WarpRegistry, AreaPreservingFlagMatchesTheDensity) {
     if (!constant) varies.insert(c.name);
   }
   for (const auto& info : warps())
-    if (!info.area_preserving) EXPECT_TRUE(varies.count(info.name)) << info.name << " has a constant density";
+    if (!info.area_preserving) {
+      EXPECT_TRUE(varies.count(info.name)) << info.name << " has a constant density";
+    }
 }
 
 // ∫ pdf = 1 by quadrature over a region holding the support: 1D between the

@@ -195,7 +195,9 @@ TEST(EdgeDiscrepancySection, GridPatternsAgainstTheDirectEnumerationAndTheBound)
     const double value = p["edge_discrepancy"];
     // The O(N³) enumeration of every candidate line is an independent oracle
     // (for 2 or more points; one sample's value is checked through its line).
-    if (n >= 2) EXPECT_NEAR(value, analysis::edge_discrepancy_naive(view).value, 1e-12) << p["name"];
+    if (n >= 2) {
+      EXPECT_NEAR(value, analysis::edge_discrepancy_naive(view).value, 1e-12) << p["name"];
+    }
     // The reported line attains it.
     const analysis::EdgeLine line{p["line"]["angle"].get<double>(), p["line"]["offset"].get<double>()};
     // Samples exactly on the line may be counted on one side only in floating point: a lower bound.

@@ -18,8 +18,8 @@
 /// progressive sampler (registry property "progressive": every prefix of its
 /// randomized sequence is its set, e.g. sobol, halton, pmj02, random) frame K
 /// takes the pixel's samples K·spp … (K+1)·spp − 1, so frames 0…K−1 together
-/// are exactly the samples of one frame at K·spp, and consecutive frames are
-/// stratified against each other; any other sampler (a pattern, zsobol,
+/// are exactly the samples of one frame at K·spp (for sobol at K·spp = 2^m a
+/// (0,m,2)-net in each dimension pair); any other sampler (a pattern, zsobol,
 /// sobol-bn) draws frame K from seed hash(seed, K): independent frames. Frame
 /// 0 is the render without frames, bit for bit.
 ///
