@@ -116,34 +116,40 @@ void read_numbers_strictly(CLI::App& app) {
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) read_numbers_strictly(*command);
 }
 
+namespace {
+
+/// The names of `app`'s subcommands, comma-separated ("" when it has none).
+std::string subcommand_names(const CLI::App& app) {
+  std::string names;
+  for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
+    names += (names.empty() ? "" : ", ") + command->get_name();
+  return names;
+}
+
+}  // namespace
+
 void check_subcommand_names(const CLI::App& app, int argc, const char* const* argv) {
   const CLI::App* at = &app;
+  const auto of = [&] { return at == &app ? std::string() : " of " + at->get_name(); };
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];
     if (word.empty() || word.front() == '-') return;  // options, --help, --version: CLI11's to judge
-    const auto commands = at->get_subcommands([](const CLI::App*) { return true; });
-    if (commands.empty()) return;
+    const std::string names = subcommand_names(*at);
+    if (names.empty()) return;
     const CLI::App* next = nullptr;
-    std::string names;
-    for (const CLI::App* command : commands) {
+    for (const CLI::App* command : at->get_subcommands([](const CLI::App*) { return true; }))
       if (command->check_name(word)) next = command;
-      names += (names.empty() ? "" : ", ") + command->get_name();
-    }
-    if (!next) {
-      const std::string of = at == &app ? "" : " of " + at->get_name();
-      throw usage_error("unknown subcommand '" + printable(word) + "'" + of + ": valid subcommands are " + names);
-    }
+    if (!next) throw usage_error("unknown subcommand '" + printable(word) + "'" + of() + ": valid subcommands are " + names);
     at = next;
   }
   // Every word was a subcommand name and the last one needs a subcommand of
   // its own (bare `stratum`, `stratum study`): say which, not CLI11's "A subcommand is required".
-  const auto commands = at->get_subcommands([](const CLI::App*) { return true; });
-  if (commands.empty()) return;
-  std::string names, path;
-  for (const CLI::App* command : commands) names += (names.empty() ? "" : ", ") + command->get_name();
+  const std::string names = subcommand_names(*at);
+  if (names.empty()) return;
+  std::string path;
   for (int i = 1; i < argc; ++i) path += std::string(" ") + argv[i];
-  throw usage_error("give a subcommand" + (at == &app ? std::string() : " of " + at->get_name()) + ": one of " + names +
-                    " (stratum" + path + " SUBCOMMAND --help for its options)");
+  throw usage_error("give a subcommand" + of() + ": one of " + names + " (stratum" + path +
+                    " SUBCOMMAND --help for its options)");
 }
 
 }  // namespace stratum::cli

@@ -200,9 +200,11 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     dimension_valid_ = array_valid_ = 0;
     for (auto& set : sets_) set.n = 0;  // stale: redrawn on first use
     for (auto& set : halton_sets_) set.coordinates = 0;
-    // A frame's own time pattern also where the pixel key is every frame's (progressive samplers).
-    const std::uint64_t time_seed = settings_.frame == 0 ? hash64(key, tag_time) : hash64(key, tag_time, settings_.frame);
-    if (!spacetime_.empty()) spacetime_set_ = draw(spacetime_, settings_.spp, 3, time_seed);
+    if (!spacetime_.empty()) {
+      // A frame's own time pattern also where the pixel key is every frame's (progressive samplers).
+      const std::uint64_t time_seed = settings_.frame == 0 ? hash64(key, tag_time) : hash64(key, tag_time, settings_.frame);
+      spacetime_set_ = draw(spacetime_, settings_.spp, 3, time_seed);
+    }
   }
   index_ = index < settings_.spp ? index : index % settings_.spp;  // no division in the usual case
   sequence_index_ = offset_ + index_;

@@ -143,8 +143,8 @@ void screen_space_error(SectionContext& context, Section& section) {
   section.text.push_back(
       "Across frames of an animation (stratum render --frame K) the same rule runs in time: a progressive sampler's "
       "frame K takes each pixel's next block of spp samples of its sequence, so frames 0…K−1 together are "
-      "exactly one frame at K·spp (tested) and converge as the sequence does, while patterns and the blue-noise samplers take a fresh seed per frame (independent "
-      "frames). Cook's and the magic square's assignment, nearby in space and far apart in time within one pixel's "
+      "exactly one frame at K·spp (tested) and converge as the sequence does, while patterns and the blue-noise "
+      "samplers take a fresh seed per frame (independent frames). Cook's and the magic square's assignment, nearby in space and far apart in time within one pixel's "
       "set, is the special case of one frame.");
 }
 
