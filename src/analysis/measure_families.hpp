@@ -1,10 +1,19 @@
 #pragma once
 /// The measure registry's families, one source file each.
+#include <algorithm>
+#include <cstddef>
+#include <thread>
 #include <vector>
 
 #include "stratum/analysis/measures.hpp"
 
 namespace stratum::analysis::measure_families {
+/// Workers a measure's parallel loop runs at once (threads 0: every core):
+/// the count of per-worker scratch buffers its working_bytes allows for.
+inline double concurrent_workers(unsigned threads) {
+  return threads != 0 ? double(threads) : double(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 std::vector<MeasureInfo> l2();        // measures_l2.cpp: l2-star, cd, wd, md
 std::vector<MeasureInfo> star();      // measures_star.cpp: star (exact and bounds)
 std::vector<MeasureInfo> edge();      // measures_edge.cpp: edge, edge-random

@@ -66,6 +66,12 @@ MeasureResult compute_measure(std::string_view name, const PointView& points, co
   MeasureRequest bound = request;
   bound.values = bind_params(info.name, info.params, request.params, "measure-param");
   if (info.validate) info.validate(points, bound);
+  // Points handed in (a file, a Python array) are already in memory; what
+  // the measure allocates for them is checked here, before it starts.
+  if (info.working_bytes)
+    require_memory(info.working_bytes(points.n, points.d, bound),
+                   "the " + info.name + " measure of " + std::to_string(points.n) + " x " +
+                       std::to_string(points.d) + " points");
   MeasureResult result = info.compute(points, bound);
   // A measure whose terms leave double precision (products of d factors
   // that over- or underflow at large d) has no number to report: refused,

@@ -35,6 +35,12 @@ std::vector<MeasureInfo> edge() {
             result.extras = {{"line_angle", exact.line.angle}, {"line_offset", exact.line.offset}};
             return result;
           },
+      // The best line through each point, and each worker's rays and
+      // collinear groups about its centre (32 bytes each, at most N).
+      .working_bytes =
+          [](std::size_t n, std::size_t, const MeasureRequest& request) {
+            return (24 + 64 * concurrent_workers(request.threads)) * double(n);
+          },
   });
   list.push_back({
       .name = "edge-random",
@@ -54,6 +60,12 @@ std::vector<MeasureInfo> edge() {
             result.kind = "estimate";
             result.extras = {{"mean", estimate.mean}, {"max", estimate.max}, {"lines", static_cast<double>(estimate.lines)}};
             return result;
+          },
+      // One value per line, kept to sum in index order (the same result
+      // for any thread count): 2^32 lines are 32 GiB.
+      .working_bytes =
+          [](std::size_t, std::size_t, const MeasureRequest& request) {
+            return 8 * double(request.values.unsigned_integer("lines"));
           },
   });
   return list;

@@ -17,6 +17,10 @@ std::uint64_t base_of(const MeasureRequest& request) { return request.values.uns
 
 bool toroidal_of(const MeasureRequest& request) { return request.values.flag("toroidal"); }
 
+/// The neighbour grid's cell heads and per-point links (about one cell per
+/// point, 4-byte indices each).
+double neighbour_grid_bytes(std::size_t n, std::size_t, const MeasureRequest&) { return 8 * double(n); }
+
 MeasureInfo t_value_measure() {
   MeasureInfo info;
   info.name = "t-value";
@@ -32,6 +36,11 @@ MeasureInfo t_value_measure() {
     result.extras["m"] = quality.m;
     result.extras["base"] = static_cast<double>(base);
     return result;
+  };
+  // Every coordinate's finest interval index, and the counts of one level's
+  // elementary intervals (at most N).
+  info.working_bytes = [](std::size_t n, std::size_t d, const MeasureRequest&) {
+    return 8 * double(n) * double(d) + 4 * double(n);
   };
   return info;
 }
@@ -51,6 +60,7 @@ MeasureInfo latin_measure() {
     result.extras["empty_strata"] = static_cast<double>(check.empty_strata);
     return result;
   };
+  info.working_bytes = [](std::size_t n, std::size_t, const MeasureRequest&) { return 8 * double(n); };  // counts
   return info;
 }
 
@@ -70,6 +80,7 @@ MeasureInfo min_distance_measure() {
     result.extras["second"] = static_cast<double>(closest.second);
     return result;
   };
+  info.working_bytes = neighbour_grid_bytes;
   return info;
 }
 
@@ -92,6 +103,7 @@ MeasureInfo poisson_radius_measure() {
     result.extras["packing_distance"] = packing;
     return result;
   };
+  info.working_bytes = neighbour_grid_bytes;
   return info;
 }
 

@@ -89,6 +89,21 @@ std::vector<MeasureInfo> star() {
     result.extras["boxes"] = static_cast<double>(bounds.boxes);
     return result;
   };
+  // What each method allocates besides the points (the memory guard): the
+  // 1D copy; the 2D sweep's pairs, counts, group starts and per-worker y
+  // lists; Dobkin-Eppstein-Mitchell's index lists and cuts (N is small where
+  // it is feasible); the bounds' sorted axes, point lists of the first
+  // boxes and per-worker depth-first stacks (the children of a box hold
+  // disjoint subsets of its points, so each stack holds at most N indices).
+  info.working_bytes = [](std::size_t n, std::size_t d, const MeasureRequest& request) {
+    const double points = double(n), workers = concurrent_workers(request.threads);
+    if (method_of(request) == "exact" || (method_of(request) == "auto" && star_exact_feasible(n, d))) {
+      if (d == 1) return 8 * points;
+      if (d == 2) return (56 + 8 * workers) * points;
+      return (32 * double(d) + 8 * workers) * points;
+    }
+    return 8 * points * double(d) + 4 * points * (2 + workers);
+  };
   return {info};
 }
 

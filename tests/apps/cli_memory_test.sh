@@ -28,6 +28,16 @@ refused "needs 312.5 KiB for 10000 x 1 points and their l2-star measure, 312.5 K
 limited 320000 discrepancy -m l2-star -s random -n 10000 -d 1 && grep -q "^l2-star" "$tmp/out" && ok ||
   fail "discrepancy under the limit: $(cat "$tmp/err")"
 
+# random-edge keeps one value per line: 2^32 lines are 32 GiB, refused before
+# the points are generated, and for points from a file before the lines are drawn
+refused "needs 32.0 GiB for 16 x 2 points and their edge-random measure" 1073741824 \
+  discrepancy -m edge-random -s random -n 16 --measure-param lines=4294967296
+"$stratum" points -s random -n 16 -o "$tmp/square.txt" || fail "points for the file case"
+refused "needs 32.0 GiB for the edge-random measure of 16 x 2 points" 1073741824 \
+  discrepancy "$tmp/square.txt" -m edge-random --measure-param lines=4294967296
+limited 1073741824 discrepancy "$tmp/square.txt" -m edge-random --measure-param lines=1000 &&
+  grep -q "^edge-random" "$tmp/out" && ok || fail "edge-random under the limit: $(cat "$tmp/err")"
+
 # converge: 2 runs at once of 4096 x 4 points and their values (2 x 4096 x 5 x 8 = 327680 bytes)
 refused "needs 320.0 KiB for 2 runs at once of 4096 x 4 points and their integrand values" 327679 \
   converge --integrand genz-gaussian -d 4 --samplers random --n 64:4096:4 --runs 4 --threads 2

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "stratum/analysis/l2_discrepancy.hpp"
@@ -94,6 +95,41 @@ TEST(MemoryGuard, TheL2MeasureCountsItsBuffers) {
   const MemoryLimit limit("32000");  // 8000 bytes of points and 24000 of buffers
   EXPECT_NO_THROW(sa::require_measure_memory("l2-star", 1000, 1, {}));
   EXPECT_GT(sa::l2_discrepancy_squared(sa::L2Kind::star, view), 0);
+}
+
+TEST(MemoryGuard, TheOtherMeasuresCountTheirBuffers) {
+  namespace sa = stratum::analysis;
+  // Random-edge keeps one value per line: 2^32 lines are 32 GiB, refused
+  // before the 16 points are generated and, for points handed in, before
+  // the lines are drawn.
+  const std::map<std::string, std::string> lines{{"lines", "4294967296"}};
+  std::vector<double> square(32);
+  for (std::size_t i = 0; i < square.size(); ++i) square[i] = (i + 0.5) / 32;
+  const sa::PointView sixteen{square.data(), 16, 2};
+  {
+    const MemoryLimit limit("1073741824");
+    EXPECT_THROW(sa::require_measure_memory("edge-random", 16, 2, {lines, 1}), stratum::memory_error);
+    EXPECT_THROW(sa::compute_measure("edge-random", sixteen, {lines, 1}), stratum::memory_error);
+    EXPECT_NO_THROW(sa::require_measure_memory("edge-random", 16, 2, {{{"lines", "1000"}}, 1}));
+  }
+  // Star bounds (10^6 points in d = 3 are past the exact method) on 2
+  // workers: sorted axes 24 MB, point lists 8 MB, two stacks 8 MB, and the
+  // points 24 MB.
+  {
+    const MemoryLimit limit("63999999");
+    EXPECT_THROW(sa::require_measure_memory("star", 1000000, 3, {{}, 2}), stratum::memory_error);
+  }
+  {
+    const MemoryLimit limit("64000000");
+    EXPECT_NO_THROW(sa::require_measure_memory("star", 1000000, 3, {{}, 2}));
+  }
+  // The neighbour grid of min-distance: 8 bytes per point.
+  {
+    const MemoryLimit limit("127");
+    EXPECT_THROW(sa::compute_measure("min-distance", sixteen, {}), stratum::memory_error);
+  }
+  const MemoryLimit limit("128");
+  EXPECT_GT(sa::compute_measure("min-distance", sixteen, {}).value, 0);
 }
 
 }  // namespace
