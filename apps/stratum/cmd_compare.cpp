@@ -25,8 +25,8 @@ struct CompareCommand {
   std::string scene, configs, builtin = "shadow-rays";
   render::CompareOptions run;
   std::int64_t reference_spp = 1024, width = 64, height = 64;
-  unsigned threads = 1;
-  std::uint64_t seed = 1;
+  unsigned threads = 0;
+  std::uint64_t seed = default_seed;
   bool json = false, list = false;
 };
 

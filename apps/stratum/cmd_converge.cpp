@@ -24,7 +24,7 @@ struct ConvergeOptions {
   bool counts_given = false;  ///< --n given: every sampler must take every count
   std::optional<std::int64_t> d;
   std::uint64_t seed = 0;
-  std::int64_t runs = 32, threads = 1;
+  std::int64_t runs = 32, threads = 0;
   double confidence = 0.95;  ///< level of the slopes' confidence intervals
   std::vector<std::string> integrand_params, params;  ///< --integrand-param; -p (every sampler's)
   std::string randomize;                              ///< --randomize (every sampler's)

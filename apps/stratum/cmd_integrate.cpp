@@ -24,7 +24,7 @@ struct IntegrateOptions {
   std::string integrand;
   SamplerOptions sampler{"random"};
   std::optional<std::int64_t> n, d;
-  std::int64_t runs = 1, threads = 1;
+  std::int64_t runs = 1, threads = 0;
   double confidence = 0.95;
   std::optional<double> abs_tol, rel_tol;
   std::optional<std::int64_t> max_n;

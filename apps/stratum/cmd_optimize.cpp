@@ -7,6 +7,7 @@
 #include <ostream>
 
 #include "commands.hpp"
+#include "sampler_options.hpp"
 #include "stratum/analysis/blue_noise.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/util/error.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 struct OptimizeOptions {
   std::int64_t size = 128, dims = 8, max_spp = 16, integrands = 32, sweeps = 256;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = default_seed;
   std::string output;
   bool quiet = false;
 };
@@ -70,7 +71,7 @@ void add_optimize_command(CLI::App& app) {
   command->add_option("--size", o->size, "tile side in pixels, a power of 2 in [16, 256]")->capture_default_str();
   command->add_option("--dims", o->dims, "dimensions covered (even, [2, 64]; pairs optimized one by one)")
       ->capture_default_str();
-  command->add_option("--seed", o->seed, "seed of the ranks, test integrands and swaps")->capture_default_str();
+  add_seed_option(*command, o->seed, "seed of the ranks, test integrands and swaps");
   command->add_option("--max-spp", o->max_spp, "optimize for spp = 1, 2, 4, ..., this (a power of 2, <= 256)")
       ->capture_default_str();
   command->add_option("--integrands", o->integrands, "test heavisides per spp, [1, 1024]")->capture_default_str();

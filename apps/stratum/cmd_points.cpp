@@ -20,7 +20,7 @@ struct PointsOptions {
   std::int64_t d = 2;
   std::uint64_t start = 0;
   std::optional<double> radius;
-  std::int64_t threads = 1;
+  std::int64_t threads = 0;
   std::string format;
   std::string output;
 };

@@ -28,7 +28,7 @@ struct SpectrumOptions : SamplerOptions {
   std::vector<std::string> files;
   std::string png;
   std::optional<std::int64_t> n, max_frequency;
-  std::int64_t realizations = 1, threads = 1;
+  std::int64_t realizations = 1, threads = 0;
   bool json = false;
   std::string image, reference;  ///< --image: the spectrum of an image (or of image − reference)
 };

@@ -21,7 +21,7 @@ namespace sa = stratum::analysis;
 
 struct DimensionOptions {
   std::string dims = "1:10", counts = "16:65536", rule = "midpoint", integrand = "sine-product", plot;
-  std::int64_t runs = 16, threads = 1;
+  std::int64_t runs = 16, threads = 0;
   std::uint64_t seed = 0;
   bool json = false, no_sobol = false;
 };

@@ -21,7 +21,7 @@ namespace {
 namespace sa = stratum::analysis;
 
 struct ImportanceOptions {
-  std::int64_t runs = 16, samples = 4096, threads = 1;
+  std::int64_t runs = 16, samples = 4096, threads = 0;
   std::vector<double> sizes{0.25, 1, 4}, distances{0.25, 1, 4};
   std::uint64_t seed = 0;
   std::string plot;

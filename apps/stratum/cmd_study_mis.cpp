@@ -20,7 +20,7 @@ namespace {
 namespace sa = stratum::analysis;
 
 struct MisOptions {
-  std::int64_t runs = 16, samples = 1024, threads = 1;
+  std::int64_t runs = 16, samples = 1024, threads = 0;
   std::vector<double> exponents{1, 10, 100, 1000}, angles{2, 10, 30, 60};
   double beta = 2;
   std::uint64_t seed = 0;

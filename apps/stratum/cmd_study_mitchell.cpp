@@ -20,7 +20,7 @@ struct MitchellOptions {
   std::int64_t realizations = 20;
   std::int64_t lines = 10000;
   std::uint64_t seed = 0;
-  std::int64_t threads = 1;
+  std::int64_t threads = 0;
   bool json = false;
   std::string plot;
   std::vector<std::string> extras;  ///< name or name:randomizer

@@ -20,7 +20,7 @@ namespace stratum::cli {
 struct PointInput : SamplerOptions {
   std::string file;
   std::optional<std::int64_t> n, d;
-  std::int64_t threads = 1;
+  std::int64_t threads = 1;  // add_threads_option makes it every core where the subcommand has --threads
 };
 
 /// Adds FILE, the sampler options (-s, -p, --randomize, --seed), -n and -d to `command`.

@@ -49,6 +49,7 @@ CLI::Option* add_sampler_options(CLI::App& command, SamplerOptions& options, con
 }
 
 CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::string& help) {
+  seed = default_seed;
   return command
       .add_option_function<std::string>(
           "--seed", [&seed](const std::string& text) { seed = parse_seed(text); }, help + " (an integer in [0, 2^64))")
@@ -56,23 +57,27 @@ CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::
       ->default_str(std::to_string(seed));
 }
 
+// Every subcommand's default: every core (resolve_threads(0)); --threads 1
+// for reproducible timing.
 CLI::Option* add_threads_option(CLI::App& command, std::int64_t& threads, const std::string& help) {
+  threads = static_cast<std::int64_t>(resolve_threads(0));
   return command
       .add_option_function<std::string>(
           "--threads",
           [&threads](const std::string& text) { threads = static_cast<std::int64_t>(resolve_threads(parse_threads(text))); },
           help + " (0: every core)")
       ->type_name("INT")
-      ->default_str(std::to_string(threads));
+      ->default_str("0");
 }
 
 CLI::Option* add_threads_option(CLI::App& command, unsigned& threads, const std::string& help) {
+  threads = resolve_threads(0);
   return command
       .add_option_function<std::string>(
           "--threads", [&threads](const std::string& text) { threads = resolve_threads(parse_threads(text)); },
           help + " (0: every core)")
       ->type_name("INT")
-      ->default_str(std::to_string(threads));
+      ->default_str("0");
 }
 
 /// The name a message gives an option: its long name ("resolution"), else

@@ -99,7 +99,7 @@ def comparisons() -> list[dict]:
 
 def compare(scene=None, builtin: str | None = None, configs: list[dict] | None = None, reference_spp: int = 1024,
             cache=".stratum-cache", equal_time: float | None = None, variance_dir=None, width: int = 64,
-            height: int = 64, threads: int = 1, seed: int = 1) -> list[dict]:
+            height: int = 64, threads: int = 1, seed: int = 0) -> list[dict]:
     """Renders each configuration and measures it against its converged
     reference, as `stratum compare`: one dict per configuration with label,
     spp (samples taken), passes, mse, relative_mse, seconds, efficiency

@@ -11,14 +11,15 @@ def report_sections() -> list[dict]:
     return _stratum.report_sections()
 
 
-def report(directory: str = "report", quick: bool = False, samplers=(), only=(), threads: int = 0, seed: int = 1,
+def report(directory: str = "report", quick: bool = False, samplers=(), only=(), threads: int = 1, seed: int = 0,
            cache: str = ".stratum-cache", verbose: bool = False) -> dict:
     """Writes DIRECTORY/index.html, report.json and figures/; returns
     {"index": path, "seconds": s, "numbers": {section id: measurements}}.
 
     samplers: extra registry samplers (specs NAME[(KEY=VALUE,...)][:RANDOMIZER],
     docs/samplers.md) added to the pattern comparisons; only: section ids to
-    run (default all). threads=0: every core.
+    run (default all). threads: 1 by default, as every function of the
+    package (threads=0: every core).
     Raises stratum.InvalidArgument on bad options, before any work."""
     index, numbers, seconds = _stratum.report(str(directory), bool(quick), list(samplers), list(only),
                                               _checks.threads(threads), _checks.seed(seed), str(cache), bool(verbose))

@@ -77,7 +77,7 @@ def _count(name, value, low, high):
     return int(value)
 
 
-def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 1, max_spp: int = 16, integrands: int = 32,
+def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 0, max_spp: int = 16, integrands: int = 32,
                         sweeps: int = 256, output=None) -> dict:
     """sobol-bn's key tile (docs/blue-noise.md), as ``stratum optimize
     blue-noise``: per-pixel ranks (which block of the shared Owen-scrambled

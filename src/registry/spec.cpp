@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
+#include <cstring>
 #include <thread>
 
 #include "stratum/registry.hpp"
@@ -334,7 +336,17 @@ unsigned resolve_threads(std::int64_t threads) {
   require(threads >= 0 && threads <= max_threads, "threads", threads,
           "must be an integer in [0, " + std::to_string(max_threads) + "] (0: every core)");
   if (threads > 0) return static_cast<unsigned>(threads);
-  const unsigned cores = std::thread::hardware_concurrency();
+  // The processes of an MPI job on one machine share its cores (Open MPI
+  // and MPICH say how many there are): each takes its share, not all.
+  unsigned cores = std::thread::hardware_concurrency();
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* text = std::getenv(name)) {
+      unsigned local = 0;
+      const char* end = text + std::strlen(text);
+      if (const auto [next, error] = std::from_chars(text, end, local); error == std::errc{} && next == end && local > 0)
+        cores /= local;
+      break;
+    }
   return std::clamp(cores, 1u, static_cast<unsigned>(max_threads));
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <thread>
 
 #include "error_of.hpp"
@@ -193,6 +195,22 @@ TEST(SamplerSpec, ThreadRuleZeroIsEveryCore) {
   EXPECT_EQ(resolve_threads(0), std::min(cores, 1024u));
   expect_contains(error_of([] { resolve_threads(-1); }), {"invalid threads = -1: must be an integer in [0, 1024] (0: every core)"});
   expect_contains(error_of([] { resolve_threads(1025); }), {"invalid threads = 1025: "});
+}
+
+TEST(SamplerSpec, ThreadRuleSharesTheCoresOfAnMpiJob) {
+  const unsigned cores = std::min(std::max(1u, std::thread::hardware_concurrency()), 1024u);
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"}) {
+    ::setenv(name, "1", 1);
+    EXPECT_EQ(resolve_threads(0), cores) << name;
+    ::setenv(name, "2", 1);
+    EXPECT_EQ(resolve_threads(0), std::clamp(std::thread::hardware_concurrency() / 2, 1u, 1024u)) << name;
+    ::setenv(name, "100000", 1);  // more processes than cores: one thread each
+    EXPECT_EQ(resolve_threads(0), 1u) << name;
+    ::setenv(name, "2x", 1);  // not a count: ignored
+    EXPECT_EQ(resolve_threads(0), cores) << name;
+    EXPECT_EQ(resolve_threads(3), 3u) << name;  // an explicit count is kept
+    ::unsetenv(name);
+  }
 }
 
 }  // namespace

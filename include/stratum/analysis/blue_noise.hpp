@@ -40,7 +40,7 @@ namespace stratum::analysis {
 struct BlueNoiseOptions {
   std::uint32_t size = 128;       ///< tile side in pixels, a power of 2 in [16, 256]
   std::uint32_t dims = 8;         ///< coordinates (dims / 2 pairs, each optimized on its own), even, [2, 64]
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 0;  ///< stratum::default_seed (the embedded tiles used --seed 1)
   std::uint32_t max_spp = 16;     ///< the sample counts optimized for: 1, 2, 4, …, max_spp (a power of 2, ≤ 256)
   std::uint32_t integrands = 32;  ///< test integrands per sample count, [1, 1024]
   std::uint32_t sweeps = 256;     ///< swap proposals per pixel, [0, 100000]

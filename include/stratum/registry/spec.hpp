@@ -72,6 +72,9 @@ SamplerSpec combine_sampler_options(std::string_view spec, const std::vector<std
 /// "18446744073709551616" are refused naming `argument` and the value).
 std::uint64_t parse_uint64(std::string_view argument, std::string_view text);
 
+/// The one default seed of every randomized operation, on every face.
+inline constexpr std::uint64_t default_seed = 0;
+
 /// A seed: parse_uint64("seed", text).
 std::uint64_t parse_seed(std::string_view text);
 
@@ -79,7 +82,9 @@ std::uint64_t parse_seed(std::string_view text);
 inline constexpr std::int64_t max_threads = 1024;
 
 /// The one thread rule: 0 means every core (std::thread::hardware_concurrency,
-/// at most max_threads); 1..max_threads as given; anything else is refused.
+/// at most max_threads; in an MPI job, the machine's cores divided among its
+/// processes there); 1..max_threads as given; anything else is refused.
+/// 0 is every CLI subcommand's default.
 unsigned resolve_threads(std::int64_t threads);
 
 }  // namespace stratum

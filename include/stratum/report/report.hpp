@@ -21,7 +21,7 @@ struct ReportOptions {
   std::vector<std::string> extra_samplers;
   std::vector<std::string> only;  ///< section ids to run (empty: every section)
   unsigned threads = 0;           ///< 0: every core
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 0;  ///< stratum::default_seed
   std::string cache_dir = ".stratum-cache";  ///< converged reference renders, reused across runs
 };
 
