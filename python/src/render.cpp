@@ -12,6 +12,7 @@
 #include "stratum/util/interrupt.hpp"
 #include "stratum/io/json.hpp"
 #include "stratum/render/compare.hpp"
+#include "stratum/render/compare_repeated.hpp"
 #include "stratum/util/error.hpp"
 
 namespace py = pybind11;
@@ -53,7 +54,8 @@ py::tuple render_image(const std::string& scene_path, int width, int height, con
 }
 
 py::list compare_rows(const std::string& scene_path, const std::string& builtin, const std::string& configs_json,
-                      render::CompareOptions options, int width, int height, unsigned threads, std::uint64_t seed) {
+                      render::CompareOptions options, int width, int height, unsigned threads, std::uint64_t seed,
+                      unsigned repeats, double confidence) {
   std::vector<render::CompareConfig> configs;
   if (configs_json.empty()) {
     configs = render::builtin_comparison(builtin, threads, seed);
@@ -62,13 +64,15 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
   }
   const bool keep_motion = configs_json.empty() && builtin == "time-pattern";
   const auto prepared = render::comparison_scene(scene_path, keep_motion, width, height);
-  std::vector<render::CompareRow> rows;
+  render::RepeatedCompare repeated;
   {
     InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
-    rows = render::compare(prepared.scene, prepared.key, configs, options);
+    repeated = render::compare_repeated(prepared.scene, prepared.key, configs, options, repeats, confidence);
   }
+  const auto interval = [](const analysis::RatioInterval& i) { return py::make_tuple(i.low, i.high); };
   py::list out;
-  for (const auto& r : rows) {
+  for (std::size_t c = 0; c < repeated.summary.size(); ++c) {
+    const render::CompareRow& r = repeated.summary[c];
     py::dict row(py::arg("label") = r.label, py::arg("spp") = r.samples, py::arg("passes") = r.passes,
                  py::arg("mse") = r.mse, py::arg("relative_mse") = r.relative_mse, py::arg("seconds") = r.seconds,
                  py::arg("efficiency") = r.efficiency, py::arg("mse_ratio") = r.mse_ratio,
@@ -78,6 +82,19 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
     row["low_frequency_power"] = r.low_frequency_power;  // NaN where the error has no spectrum
     row["error_spectrum"] = py::dict(py::arg("frequency") = r.error_radial_frequency,
                                      py::arg("power") = r.error_radial_power);
+    if (repeats > 1) {  // the statistics over the repeats, as `stratum compare --repeats --json`
+      const render::RepeatedStatistics& st = repeated.statistics[c];
+      std::vector<double> mse, seconds;
+      for (const auto& each : repeated.rows) mse.push_back(each[c].mse), seconds.push_back(each[c].seconds);
+      row["mse_per_seed"] = mse;
+      row["seconds_per_seed"] = seconds;
+      row["mse_standard_error"] = st.mse.standard_error;
+      row["mse_ratio_interval"] = interval(st.mse_ratio);
+      row["time_ratio"] = st.time_ratio.estimate;
+      row["time_ratio_interval"] = interval(st.time_ratio);
+      row["efficiency_ratio_interval"] = interval(st.efficiency_ratio);
+      row["time_resolved"] = st.time_resolved;
+    }
     out.append(row);
   }
   return out;
@@ -115,17 +132,17 @@ void bind_render(py::module_& m) {
       "compare",
       [](const std::string& scene, const std::string& builtin, const std::string& configs, std::uint32_t reference_spp,
          const std::string& cache, double equal_time, const std::string& variance_dir, int width, int height,
-         unsigned threads, std::uint64_t seed) {
+         unsigned threads, std::uint64_t seed, unsigned repeats, double confidence) {
         render::CompareOptions options;
         options.reference_spp = reference_spp;
         options.cache_dir = cache;
         options.equal_time = equal_time;
         options.variance_dir = variance_dir;
-        return compare_rows(scene, builtin, configs, options, width, height, threads, seed);
+        return compare_rows(scene, builtin, configs, options, width, height, threads, seed, repeats, confidence);
       },
       py::arg("scene"), py::arg("builtin"), py::arg("configs"), py::arg("reference_spp"), py::arg("cache"),
       py::arg("equal_time"), py::arg("variance_dir"), py::arg("width"), py::arg("height"), py::arg("threads"),
-      py::arg("seed"));
+      py::arg("seed"), py::arg("repeats"), py::arg("confidence"));
   m.def("comparisons", [] {
     py::list list;
     for (const auto& [name, description] : render::builtin_comparisons())

@@ -99,7 +99,8 @@ def comparisons() -> list[dict]:
 
 def compare(scene=None, builtin: str | None = None, configs: list[dict] | None = None, reference_spp: int = 1024,
             cache=".stratum-cache", equal_time: float | None = None, variance_dir=None, width: int = 64,
-            height: int = 64, threads: int = 1, seed: int = 0) -> list[dict]:
+            height: int = 64, threads: int = 1, seed: int = 0, repeats: int = 1,
+            confidence: float | None = None) -> list[dict]:
     """Renders each configuration and measures it against its converged
     reference, as `stratum compare`: one dict per configuration with label,
     spp (samples taken), passes, mse, relative_mse, seconds, efficiency
@@ -111,7 +112,17 @@ def compare(scene=None, builtin: str | None = None, configs: list[dict] | None =
     builtin: a name from comparisons() (default "shadow-rays"); configs: a
     list of dicts with the keys of a configuration file (docs/render.md).
     equal_time: seconds per configuration (independent passes until then);
-    None compares at equal samples."""
+    None compares at equal samples.
+
+    repeats: render every configuration with this many seeds (repeat k > 0
+    with hash(seed, k)), paired: then mse and relative_mse are the means over
+    the seeds, seconds the median, mse_ratio and efficiency_ratio the
+    geometric means of the per-seed ratios, and each dict adds
+    mse_per_seed, seconds_per_seed, mse_standard_error, mse_ratio_interval,
+    time_ratio, time_ratio_interval, efficiency_ratio_interval ((low, high),
+    Student-t on the logs at level `confidence`, default 0.95) and
+    time_resolved (the time ratio's interval excludes 1: only then does the
+    efficiency ratio say more than the MSE ratio)."""
     if builtin is not None and configs is not None:
         raise _error("configs", configs, "give builtin or configs, not both")
     text = ""
@@ -127,8 +138,15 @@ def compare(scene=None, builtin: str | None = None, configs: list[dict] | None =
     if equal_time is not None and (isinstance(equal_time, bool) or not isinstance(equal_time, numbers.Real)
                                    or not 0 < equal_time <= 1e6):
         raise _error("equal_time", equal_time, "must be a number of seconds in (0, 1e6], or None (equal samples)")
+    repeats = _count("repeats", repeats, 1, 1000)
+    if confidence is not None and repeats < 2:
+        raise _error("confidence", confidence, "applies with repeats of 2 or more (intervals over the repeats' seeds)")
+    if confidence is not None and (isinstance(confidence, bool) or not isinstance(confidence, numbers.Real)
+                                   or not 0 < confidence < 1):
+        raise _error("confidence", confidence, "must be a number in (0, 1)")
     return _stratum.compare(_path("scene", scene), _text("builtin", builtin or "shadow-rays"), text,
                             _count("reference_spp", reference_spp), _path("cache", cache),
                             0.0 if equal_time is None else float(equal_time), _path("variance_dir", variance_dir),
                             _count("width", width, 1, 16384), _count("height", height, 1, 16384),
-                            _checks.threads(threads), _seed(seed))
+                            _checks.threads(threads), _seed(seed), repeats,
+                            0.95 if confidence is None else float(confidence))

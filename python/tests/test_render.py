@@ -106,6 +106,19 @@ def test_compare_at_equal_samples_and_equal_time(tmp_path):
         assert (tmp_path / "var").is_dir() and r["variance"].startswith(str(tmp_path / "var"))
 
 
+def test_compare_repeated_over_paired_seeds(tmp_path):
+    one = stratum.compare(builtin="shadow-rays", width=8, height=8, reference_spp=32, cache=tmp_path / "cache")
+    rows = stratum.compare(builtin="shadow-rays", width=8, height=8, reference_spp=32, cache=tmp_path / "cache",
+                           repeats=3, confidence=0.9)
+    for r, first in zip(rows, one):
+        assert r["mse_per_seed"][0] == first["mse"] and len(set(r["mse_per_seed"])) == 3
+        assert r["mse"] == pytest.approx(np.mean(r["mse_per_seed"]), rel=1e-12)
+        assert r["seconds"] == np.median(r["seconds_per_seed"])
+    low, high = rows[1]["mse_ratio_interval"]
+    assert 1 < low < rows[1]["mse_ratio"] < high
+    assert "mse_per_seed" not in one[1]  # one repeat: the plain comparison's dicts
+
+
 @pytest.mark.parametrize("call, word", [
     (lambda: stratum.render(spp=0), "spp"),
     (lambda: stratum.render(width=0), "width"),
@@ -121,6 +134,9 @@ def test_compare_at_equal_samples_and_equal_time(tmp_path):
     (lambda: stratum.compare(configs=[{"colour": 1}], width=4, height=4), "colour"),
     (lambda: stratum.compare(configs=[{"spp": 1}], builtin="path"), "configs"),
     (lambda: stratum.compare(equal_time=-1), "equal_time"),
+    (lambda: stratum.compare(repeats=0), "repeats"),
+    (lambda: stratum.compare(confidence=0.9), "confidence"),
+    (lambda: stratum.compare(repeats=2, confidence=1.5), "confidence"),
 ])
 def test_bad_input_names_the_argument(call, word):
     with pytest.raises(stratum.InvalidArgument, match=word):

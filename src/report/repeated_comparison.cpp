@@ -6,14 +6,15 @@
 
 #include "sections.hpp"
 #include "stratum/util/error.hpp"
-#include "stratum/util/hash.hpp"
 
 namespace stratum::report {
 
 RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
                                            const std::vector<render::CompareConfig>& configs,
                                            const render::CompareOptions& options, unsigned repeats) {
-  require(repeats >= 1, "repeats", repeats, "must be at least 1");
+  std::vector<render::CompareImages> pictures;
+  render::RepeatedCompare repeated = render::compare_repeated(scene.scene, scene.key, configs, options, repeats, 0.95,
+                                                              &pictures);
   RepeatedComparison result;
   result.repeats = repeats;
   result.reference_spp = options.reference_spp;
@@ -23,19 +24,15 @@ RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
   result.samples.resize(configs.size());
   for (const auto& config : configs) result.labels.push_back(config.label);
   for (unsigned k = 0; k < repeats; ++k) {
-    std::vector<render::CompareConfig> seeded = configs;
-    if (k > 0)  // every configuration of a repeat shares its seed: paired comparisons
-      for (auto& config : seeded) config.settings.sampler.seed = hash64(config.settings.sampler.seed, k);
-    render::CompareImages pictures;
-    const std::vector<render::CompareRow> rows = render::compare(scene.scene, scene.key, seeded, options, &pictures);
-    for (std::size_t c = 0; c < rows.size(); ++c) {
-      result.mse[c].push_back(rows[c].mse);
-      result.seconds[c].push_back(rows[c].seconds);
-      result.samples[c].push_back(rows[c].samples);
+    for (std::size_t c = 0; c < configs.size(); ++c) {
+      const render::CompareRow& row = repeated.rows[k][c];
+      result.mse[c].push_back(row.mse);
+      result.seconds[c].push_back(row.seconds);
+      result.samples[c].push_back(row.samples);
     }
-    result.reference_cached = result.reference_cached && pictures.reference_cached;
-    if (k == 0) result.reference = std::move(pictures.reference);
-    result.images.push_back(std::move(pictures.images));
+    result.reference_cached = result.reference_cached && pictures[k].reference_cached;
+    if (k == 0) result.reference = std::move(pictures[k].reference);
+    result.images.push_back(std::move(pictures[k].images));
   }
   return result;
 }
@@ -43,24 +40,7 @@ RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
 std::vector<RowStatistics> row_statistics(const RepeatedComparison& comparison,
                                           const std::vector<std::vector<double>>& mse, double confidence) {
   require(mse.size() == comparison.labels.size(), "mse", mse.size(), "must hold one list per configuration");
-  std::vector<RowStatistics> result;
-  const auto& first_mse = mse.front();
-  const auto& first_seconds = comparison.seconds.front();
-  std::vector<double> first_cost;  // MSE × seconds: 1 / efficiency
-  for (unsigned k = 0; k < comparison.repeats; ++k) first_cost.push_back(first_mse[k] * first_seconds[k]);
-  for (std::size_t c = 0; c < mse.size(); ++c) {
-    RowStatistics row;
-    row.mse = mean_and_error(mse[c]);
-    row.median_seconds = median(comparison.seconds[c]);
-    row.mse_ratio = paired_ratio_interval(first_mse, mse[c], confidence);
-    row.time_ratio = paired_ratio_interval(comparison.seconds[c], first_seconds, confidence);
-    std::vector<double> cost;
-    for (unsigned k = 0; k < comparison.repeats; ++k) cost.push_back(mse[c][k] * comparison.seconds[c][k]);
-    row.efficiency_ratio = paired_ratio_interval(first_cost, cost, confidence);
-    row.time_resolved = c > 0 && comparison.repeats > 1 && !row.time_ratio.contains(1.0);
-    result.push_back(row);
-  }
-  return result;
+  return render::repeated_statistics(mse, comparison.seconds, confidence);
 }
 
 std::string interval_method(unsigned repeats, double confidence) {

@@ -12,6 +12,7 @@
 #include "section_context.hpp"
 #include "seed_statistics.hpp"
 #include "stratum/render/compare.hpp"
+#include "stratum/render/compare_repeated.hpp"
 
 namespace stratum::report {
 
@@ -33,16 +34,7 @@ RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
                                            const render::CompareOptions& options, unsigned repeats);
 
 /// One configuration against the first, over the repeats.
-struct RowStatistics {
-  MeanError mse;
-  double median_seconds = 0;
-  RatioInterval mse_ratio;         ///< first's MSE / this one's
-  RatioInterval time_ratio;        ///< this one's seconds / first's
-  RatioInterval efficiency_ratio;  ///< this one's 1/(MSE·s) / first's
-  /// The time ratio's interval excludes 1: the timings differ by more than
-  /// their noise, and the efficiency ratio says more than the MSE ratio.
-  bool time_resolved = false;
-};
+using RowStatistics = render::RepeatedStatistics;
 
 /// Statistics of each configuration from `mse` ([configuration][repeat]:
 /// the comparison's own or one over a mask of pixels) and its timings.

@@ -1,40 +1,17 @@
 #pragma once
-/// Statistics across independent repeats (seeds) of a measurement, for the
-/// report's ratios: a ratio of two positive quantities measured in pairs
-/// (the same seed for both) gets a Student-t interval on the mean of the
-/// log ratios, exp'd back (a geometric-mean ratio; the log makes the
-/// interval of b/a the reciprocal of that of a/b, and tames the skew of
-/// an MSE). Timings are summarized by their median, and a time ratio whose
-/// interval contains 1 is called unresolved: the timing noise exceeds the
-/// difference, so no efficiency ratio is quoted from it.
-#include <cstdint>
+/// The report's words for statistics across seeds (analysis/paired_statistics.hpp:
+/// paired ratio intervals, medians, means with their standard errors).
 #include <string>
-#include <vector>
+
+#include "stratum/analysis/paired_statistics.hpp"
 
 namespace stratum::report {
 
-/// A positive ratio with its confidence interval from paired repeats.
-struct RatioInterval {
-  double estimate = 0;  ///< exp(mean of log(a_k / b_k)): the geometric mean of the ratios
-  double low = 0, high = 0;  ///< exp(mean ± t·s/√K); equal to the estimate for K = 1
-  unsigned count = 0;        ///< K pairs
-  double confidence = 0.95;
-  bool contains(double value) const { return low <= value && value <= high; }
-};
-
-/// The t interval (K − 1 degrees of freedom) on log(numerator_k /
-/// denominator_k) over the K pairs; every value must be positive and finite.
-RatioInterval paired_ratio_interval(const std::vector<double>& numerator, const std::vector<double>& denominator,
-                                    double confidence = 0.95);
-
-/// The median (mean of the middle two for an even count); NaN when empty.
-double median(std::vector<double> values);
-
-/// The mean and its standard error (sample standard deviation / √K; 0 for K = 1).
-struct MeanError {
-  double mean = 0, standard_error = 0;
-};
-MeanError mean_and_error(const std::vector<double>& values);
+using analysis::mean_and_error;
+using analysis::MeanError;
+using analysis::median;
+using analysis::paired_ratio_interval;
+using analysis::RatioInterval;
 
 /// "1.23 (95% CI 1.10–1.38)".
 std::string format_interval(const RatioInterval& interval);

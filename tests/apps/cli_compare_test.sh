@@ -18,6 +18,29 @@ expect_error "colour" compare --configs "$tmp/cfg.json" --width 4 --height 4
 expect_error "configs" compare --configs "$tmp/nope.json"
 
 
+# Repeats: paired seeds; the summary is the repeats' mean MSE and median
+# seconds, with intervals on the ratios; repeat 0 is the plain comparison.
+"$stratum" compare --builtin shadow-rays --width 8 --height 8 --reference-spp 32 --cache "$tmp/cache" --repeats 4 \
+  --json >"$tmp/rep.json" && /usr/bin/python3 -c "
+import json, math, statistics
+one = json.load(open('$tmp/cmp.json'))['rows']; d = json.load(open('$tmp/rep.json')); rows = d['rows']
+assert d['repeats'] == 4 and d['confidence'] == 0.95, d
+for r, first in zip(rows, one):
+    assert len(r['mse_per_seed']) == 4 and len(set(r['mse_per_seed'])) == 4, r
+    assert r['mse_per_seed'][0] == first['mse'], (r, first)
+    assert math.isclose(r['mse'], statistics.fmean(r['mse_per_seed']), rel_tol=1e-12), r
+    assert r['seconds'] == statistics.median(r['seconds_per_seed']), r
+low, high = rows[1]['mse_ratio_interval']
+ratios = [a / b for a, b in zip(rows[0]['mse_per_seed'], rows[1]['mse_per_seed'])]
+assert math.isclose(rows[1]['mse_ratio'], math.exp(statistics.fmean(map(math.log, ratios))), rel_tol=1e-12)
+assert 1 < low < rows[1]['mse_ratio'] < high, rows[1]
+assert isinstance(rows[1]['time_resolved'], bool)" && ok || fail "compare --repeats 4 --json"
+"$stratum" compare --width 8 --height 8 --reference-spp 32 --cache "$tmp/cache" --repeats 3 --confidence 0.9 |
+  grep -q "MSE x (90% CI)" && ok || fail "compare --repeats table"
+expect_error "invalid repeats = 0" compare --repeats 0 --width 4 --height 4 --cache "$tmp/cache"
+expect_error "invalid confidence = 0.9: applies with --repeats 2" compare --confidence 0.9 --width 4 --height 4
+expect_error "invalid confidence = 1" compare --repeats 2 --confidence 1 --width 4 --height 4
+
 # Equal time: every configuration renders for at least the budget; samples
 # are whole passes of its spp; a configuration ~16x costlier per pass
 # (64 vs 1 shadow rays) reaches fewer samples in the same time.

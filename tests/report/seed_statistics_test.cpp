@@ -1,4 +1,4 @@
-/// The report's statistics across seeds (src/report/seed_statistics.hpp,
+/// Statistics across seeds (analysis/paired_statistics.hpp, src/report/seed_statistics.hpp,
 /// repeated_comparison.hpp): the paired Student-t interval on log ratios
 /// holds its point estimate, shrinks with more seeds and covers the true
 /// ratio at its level; an efficiency ratio is quoted only when the time
