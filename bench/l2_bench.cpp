@@ -39,22 +39,43 @@ void l2(benchmark::State& state, L2Kind kind, L2Algorithm algorithm, std::size_t
 }  // namespace
 
 BENCHMARK_CAPTURE(l2, star_warnock_d2, L2Kind::star, L2Algorithm::pairwise, 2, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, star_fast_d2, L2Kind::star, L2Algorithm::fast, 2, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 20)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 20)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, star_warnock_d3, L2Kind::star, L2Algorithm::pairwise, 3, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, star_fast_d3, L2Kind::star, L2Algorithm::fast, 3, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 20)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 20)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, star_warnock_d5, L2Kind::star, L2Algorithm::pairwise, 5, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, centered_d2, L2Kind::centered, L2Algorithm::pairwise, 2, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, centered_d5, L2Kind::centered, L2Algorithm::pairwise, 5, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, wrap_around_d5, L2Kind::wrap_around, L2Algorithm::pairwise, 5, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, mixture_d5, L2Kind::mixture, L2Algorithm::pairwise, 5, 1)
-    ->RangeMultiplier(4)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
+    ->RangeMultiplier(4)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(l2, centered_d5_all_threads, L2Kind::centered, L2Algorithm::pairwise, 5, 0)
-    ->RangeMultiplier(4)->Range(1 << 12, 1 << 16)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->RangeMultiplier(4)
+    ->Range(1 << 12, 1 << 16)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

@@ -27,9 +27,8 @@ constexpr int kSpp = 16;
 
 void report(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kSize * kSize * kSpp);
-  state.counters["ns_per_sample"] = benchmark::Counter(double(kSize) * kSize * kSpp,
-                                                       benchmark::Counter::kIsIterationInvariantRate |
-                                                           benchmark::Counter::kInvert);
+  state.counters["ns_per_sample"] = benchmark::Counter(
+      double(kSize) * kSize * kSpp, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_Stratum(benchmark::State& state, std::string name, std::string randomize) {

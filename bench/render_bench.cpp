@@ -71,8 +71,8 @@ Shape mesh_sphere(Vec3 center, double radius, int rings, std::size_t material) {
   for (int i = 0; i <= rings; ++i)
     for (int j = 0; j < segments; ++j) {
       const double theta = M_PI * i / rings, phi = 2 * M_PI * j / segments;
-      shape.vertices.push_back(center + radius * Vec3{std::sin(theta) * std::cos(phi), std::cos(theta),
-                                                      std::sin(theta) * std::sin(phi)});
+      shape.vertices.push_back(
+          center + radius * Vec3{std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
     }
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < segments; ++j) {
@@ -173,29 +173,35 @@ struct BareScene {
         g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
         rtcSetGeometryTimeStepCount(g, steps);
         for (unsigned t = 0; t < steps; ++t) {
-          auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, t, RTC_FORMAT_FLOAT4, 16, 1));
+          auto* v =
+              static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, t, RTC_FORMAT_FLOAT4, 16, 1));
           const Vec3 c = shape.center + double(t) * shape.motion;
           v[0] = float(c.x), v[1] = float(c.y), v[2] = float(c.z), v[3] = float(shape.radius);
         }
       } else {
         const bool quad = shape.type == ShapeType::quad;  // Embree quads, as the Accelerator uses
         std::vector<Vec3> vertices = shape.vertices;
-        if (quad) vertices = {shape.corner, shape.corner + shape.edge_u, shape.corner + shape.edge_u + shape.edge_v, shape.corner + shape.edge_v};
+        if (quad)
+          vertices = {shape.corner, shape.corner + shape.edge_u, shape.corner + shape.edge_u + shape.edge_v,
+                      shape.corner + shape.edge_v};
         if (!quad && shape.indices.empty()) continue;
         g = rtcNewGeometry(device, quad ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetGeometryTimeStepCount(g, steps);
         for (unsigned t = 0; t < steps; ++t) {
-          auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, t, RTC_FORMAT_FLOAT3, 12, vertices.size()));
+          auto* v = static_cast<float*>(
+              rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, t, RTC_FORMAT_FLOAT3, 12, vertices.size()));
           for (std::size_t i = 0; i < vertices.size(); ++i) {
             const Vec3 p = vertices[i] + double(t) * shape.motion;
             v[3 * i] = float(p.x), v[3 * i + 1] = float(p.y), v[3 * i + 2] = float(p.z);
           }
         }
         if (quad) {
-          auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 16, 1));
+          auto* idx =
+              static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 16, 1));
           for (unsigned k = 0; k < 4; ++k) idx[k] = k;
         } else {
-          auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, shape.indices.size()));
+          auto* idx = static_cast<unsigned*>(
+              rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, shape.indices.size()));
           for (std::size_t i = 0; i < shape.indices.size(); ++i)
             for (int k = 0; k < 3; ++k) idx[3 * i + k] = shape.indices[i][k];
         }
@@ -270,7 +276,8 @@ std::size_t trace_wrapped(const Accelerator& accelerator, const Recorded& rays, 
     for (std::size_t s = c * chunk; s < std::min(samples, (c + 1) * chunk); ++s) {
       if (sampler) {  // record()'s order: pixels row by row, kSpp samples each
         const std::size_t pixel = s / kSpp;
-        sampler->start_pixel_sample(std::uint32_t(pixel % kSize), std::uint32_t(pixel / kSize), std::uint32_t(s % kSpp));
+        sampler->start_pixel_sample(std::uint32_t(pixel % kSize), std::uint32_t(pixel / kSize),
+                                    std::uint32_t(s % kSpp));
         drawn += sampler->get_pixel_2d()[0] + sampler->get_time() + sampler->get_2d()[0];
       }
       const auto hit = accelerator.intersect(rays.eye_rays[s]);

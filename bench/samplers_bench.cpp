@@ -28,9 +28,8 @@ void memory_write_baseline(benchmark::State& state) {
     benchmark::DoNotOptimize(buffer.data.get());
     benchmark::ClobberMemory();
   }
-  state.counters["ns_per_coord"] =
-      benchmark::Counter(static_cast<double>(n * kDims), benchmark::Counter::kIsIterationInvariantRate |
-                                                             benchmark::Counter::kInvert);
+  state.counters["ns_per_coord"] = benchmark::Counter(
+      static_cast<double>(n * kDims), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void registry_sampler(benchmark::State& state, std::string name, std::string randomize, unsigned threads) {
@@ -45,9 +44,9 @@ void registry_sampler(benchmark::State& state, std::string name, std::string ran
     auto points = stratum::generate_points(name, request);
     benchmark::DoNotOptimize(points.data.get());
   }
-  state.counters["ns_per_coord"] = benchmark::Counter(
-      static_cast<double>(*request.n * request.d),
-      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_coord"] =
+      benchmark::Counter(static_cast<double>(*request.n * request.d),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 // Random access (seed, index, dim) as a renderer calls it: Sobol' with
@@ -86,9 +85,8 @@ void boost_sobol_bulk(benchmark::State& state) {
     for (std::size_t k = 0; k < n * kDims; ++k) out[k] = static_cast<double>(engine()) * 0x1.0p-32;
     benchmark::DoNotOptimize(out);
   }
-  state.counters["ns_per_coord"] = benchmark::Counter(static_cast<double>(n * kDims),
-                                                      benchmark::Counter::kIsIterationInvariantRate |
-                                                          benchmark::Counter::kInvert);
+  state.counters["ns_per_coord"] = benchmark::Counter(
+      static_cast<double>(n * kDims), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 // The Poisson-disk target: the maximal set at radius 0.01 in the
@@ -118,7 +116,8 @@ int register_all() {
   benchmark::RegisterBenchmark("baseline/memory-write", memory_write_baseline)->Arg(kCount)->Arg(1 << 20);
   benchmark::RegisterBenchmark("peer/boost-sobol", boost_sobol_bulk)->Arg(kCount)->Arg(1 << 20);
   benchmark::RegisterBenchmark("random-access/sobol-owen-hash/seeded", sobol_random_access, false);
-  benchmark::RegisterBenchmark("poisson-disk/maximal-2d/r=0.01", poisson_disk_maximal_2d)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("poisson-disk/maximal-2d/r=0.01", poisson_disk_maximal_2d)
+      ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("random-access/sobol-owen-hash/bound", sobol_random_access, true);
   for (unsigned threads : {1u, 2u})
     benchmark::RegisterBenchmark(("registry-threads/sobol/owen-hash/" + std::to_string(threads)).c_str(),

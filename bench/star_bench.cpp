@@ -70,7 +70,8 @@ double fenwick_star_2d(const std::vector<double>& x, std::size_t n) {
         const std::size_t last = static_cast<std::size_t>(std::upper_bound(ys.begin(), ys.end(), b) - ys.begin());
         best = std::max(best, prefix(last) * inv_n - a * b);
       } else if (!closed) {
-        const std::size_t first = r < n ? static_cast<std::size_t>(std::lower_bound(ys.begin(), ys.end(), b) - ys.begin()) : n;
+        const std::size_t first =
+            r < n ? static_cast<std::size_t>(std::lower_bound(ys.begin(), ys.end(), b) - ys.begin()) : n;
         best = std::max(best, a * b - prefix(first) * inv_n);
       }
     }
@@ -173,13 +174,25 @@ void star_bounds_3d(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(star_exact_2d, threads1, 1u)->RangeMultiplier(2)->Range(1 << 10, 1 << 16)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(star_exact_2d, threads2, 2u)->RangeMultiplier(4)->Range(1 << 12, 1 << 16)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_exact_2d, threads1, 1u)
+    ->RangeMultiplier(2)
+    ->Range(1 << 10, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_exact_2d, threads2, 2u)
+    ->RangeMultiplier(4)
+    ->Range(1 << 12, 1 << 16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(star_fenwick_peer)->RangeMultiplier(2)->Range(1 << 10, 1 << 13)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(star_dem_vs_grid, d3, 3)->RangeMultiplier(2)->Range(1 << 6, 1 << 11)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(star_dem_vs_grid, d4, 4)->RangeMultiplier(2)->Range(1 << 4, 1 << 8)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(star_dem, d3_random, 3, false)->RangeMultiplier(2)->Range(1 << 12, 1 << 13)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(star_dem, d4_random, 4, false)->RangeMultiplier(2)->Range(1 << 9, 1 << 10)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem, d3_random, 3, false)
+    ->RangeMultiplier(2)
+    ->Range(1 << 12, 1 << 13)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(star_dem, d4_random, 4, false)
+    ->RangeMultiplier(2)
+    ->Range(1 << 9, 1 << 10)
+    ->Unit(benchmark::kMillisecond);
 // At the size limits (star_dem_max_points: 14000 for d = 3, 2200 for d = 4).
 BENCHMARK_CAPTURE(star_dem, d3_halton, 3, true)->Arg(4096)->Arg(14000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(star_dem, d4_halton, 4, true)->Arg(1024)->Arg(2200)->Unit(benchmark::kMillisecond);

@@ -47,7 +47,8 @@ void copy_baseline(benchmark::State& state) {
 
 stratum::WarpParams example(const std::string& name) {
   if (name == "piecewise-1d") return {{"values", std::vector<double>(256, 1.0)}, {"width", {256}}};
-  if (name == "piecewise-2d") return {{"values", std::vector<double>(256 * 128, 1.0)}, {"width", {256}}, {"height", {128}}};
+  if (name == "piecewise-2d")
+    return {{"values", std::vector<double>(256 * 128, 1.0)}, {"width", {256}}, {"height", {128}}};
   if (name == "alias") return {{"values", std::vector<double>(256, 1.0)}};
   return {};
 }
@@ -88,15 +89,26 @@ const bool registered = [] {
   const stratum::NormalDensity<double> normal(0, 1);
   const stratum::BilinearDensity<double> bilinear(std::array<double, 4>{1, 2, 3, 4});
   using A2 = std::array<double, 2>;
-  benchmark::RegisterBenchmark("warp/core/disk-polar", [](benchmark::State& s) { core_warp(s, stratum::sample_polar_disk<double>); });
-  benchmark::RegisterBenchmark("warp/core/disk-concentric", [](benchmark::State& s) { core_warp(s, stratum::sample_concentric_disk<double>); });
-  benchmark::RegisterBenchmark("warp/core/hemisphere-uniform", [](benchmark::State& s) { core_warp(s, stratum::sample_uniform_hemisphere<double>); });
-  benchmark::RegisterBenchmark("warp/core/hemisphere-cosine", [](benchmark::State& s) { core_warp(s, stratum::sample_cosine_hemisphere<double>); });
-  benchmark::RegisterBenchmark("warp/core/sphere-uniform", [](benchmark::State& s) { core_warp(s, stratum::sample_uniform_sphere<double>); });
-  benchmark::RegisterBenchmark("warp/core/cone", [cone](benchmark::State& s) { core_warp(s, [&](A2 u) { return cone.sample(u); }); });
-  benchmark::RegisterBenchmark("warp/core/triangle-3d", [triangle](benchmark::State& s) { core_warp(s, [&](A2 u) { return triangle.sample(u); }); });
-  benchmark::RegisterBenchmark("warp/core/normal", [normal](benchmark::State& s) { core_warp(s, [&](A2 u) { return normal.sample(u[0]); }); });
-  benchmark::RegisterBenchmark("warp/core/bilinear", [bilinear](benchmark::State& s) { core_warp(s, [&](A2 u) { return bilinear.sample(u); }); });
+  benchmark::RegisterBenchmark("warp/core/disk-polar",
+                               [](benchmark::State& s) { core_warp(s, stratum::sample_polar_disk<double>); });
+  benchmark::RegisterBenchmark("warp/core/disk-concentric",
+                               [](benchmark::State& s) { core_warp(s, stratum::sample_concentric_disk<double>); });
+  benchmark::RegisterBenchmark("warp/core/hemisphere-uniform",
+                               [](benchmark::State& s) { core_warp(s, stratum::sample_uniform_hemisphere<double>); });
+  benchmark::RegisterBenchmark("warp/core/hemisphere-cosine",
+                               [](benchmark::State& s) { core_warp(s, stratum::sample_cosine_hemisphere<double>); });
+  benchmark::RegisterBenchmark("warp/core/sphere-uniform",
+                               [](benchmark::State& s) { core_warp(s, stratum::sample_uniform_sphere<double>); });
+  benchmark::RegisterBenchmark("warp/core/cone",
+                               [cone](benchmark::State& s) { core_warp(s, [&](A2 u) { return cone.sample(u); }); });
+  benchmark::RegisterBenchmark("warp/core/triangle-3d", [triangle](benchmark::State& s) {
+    core_warp(s, [&](A2 u) { return triangle.sample(u); });
+  });
+  benchmark::RegisterBenchmark(
+      "warp/core/normal", [normal](benchmark::State& s) { core_warp(s, [&](A2 u) { return normal.sample(u[0]); }); });
+  benchmark::RegisterBenchmark("warp/core/bilinear", [bilinear](benchmark::State& s) {
+    core_warp(s, [&](A2 u) { return bilinear.sample(u); });
+  });
   return true;
 }();
 

@@ -85,7 +85,8 @@ class FillingGroup final : public stratum::distributed::Group {
   void gather(double* data, const std::vector<stratum::distributed::Share>& segments) override {
     for (int r = 0; r < size_; ++r)
       if (r != rank_)
-        for (std::size_t at = segments[std::size_t(r)].begin; at < segments[std::size_t(r)].end; ++at) data[at] = 1000.0 + double(at);
+        for (std::size_t at = segments[std::size_t(r)].begin; at < segments[std::size_t(r)].end; ++at)
+          data[at] = 1000.0 + double(at);
   }
   bool any(bool flag) override { return flag; }
 

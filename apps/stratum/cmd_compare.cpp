@@ -44,7 +44,8 @@ void run_compare(CompareCommand& o) {
     for (const auto& [name, description] : render::builtin_comparisons()) fmt::print("{:16} {}\n", name, description);
     return;
   }
-  require(o.reference_spp >= 1 && o.reference_spp <= (1 << 24), "reference-spp", o.reference_spp, "must be in [1, 2^24]");
+  require(o.reference_spp >= 1 && o.reference_spp <= (1 << 24), "reference-spp", o.reference_spp,
+          "must be in [1, 2^24]");
   require(o.width >= 1 && o.width <= 16384, "width", o.width, "must be in [1, 16384]");
   require(o.height >= 1 && o.height <= 16384, "height", o.height, "must be in [1, 16384]");
   require(o.repeats >= 1 && o.repeats <= 1000, "repeats", o.repeats, "must be in [1, 1000]");
@@ -66,13 +67,20 @@ void run_compare(CompareCommand& o) {
   if (o.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : rows) {
-      out.push_back({{"label", r.label}, {"spp", r.samples}, {"passes", r.passes}, {"mse", r.mse},
-                     {"relative_mse", r.relative_mse}, {"seconds", r.seconds}, {"efficiency", r.efficiency},
-                     {"mse_ratio", r.mse_ratio}, {"efficiency_ratio", r.efficiency_ratio}});
+      out.push_back({{"label", r.label},
+                     {"spp", r.samples},
+                     {"passes", r.passes},
+                     {"mse", r.mse},
+                     {"relative_mse", r.relative_mse},
+                     {"seconds", r.seconds},
+                     {"efficiency", r.efficiency},
+                     {"mse_ratio", r.mse_ratio},
+                     {"efficiency_ratio", r.efficiency_ratio}});
       if (!r.variance_path.empty()) out.back()["variance"] = r.variance_path;
       // The error's spectrum (docs/render.md): null where there is none (tiny or perfect images).
       auto& row = out.back();
-      row["low_frequency_power"] = std::isfinite(r.low_frequency_power) ? nlohmann::json(r.low_frequency_power) : nullptr;
+      row["low_frequency_power"] =
+          std::isfinite(r.low_frequency_power) ? nlohmann::json(r.low_frequency_power) : nullptr;
       nlohmann::json power = nlohmann::json::array();
       for (double p : r.error_radial_power) power.push_back(std::isfinite(p) ? nlohmann::json(p) : nullptr);
       row["error_spectrum"] = {{"frequency", r.error_radial_frequency}, {"power", power}};
@@ -91,17 +99,22 @@ void run_compare(CompareCommand& o) {
         row["time_resolved"] = st.time_resolved;
       }
     }
-    std::cout << nlohmann::json{{"scene", scene.name}, {"reference_spp", o.reference_spp}, {"equal_time", o.run.equal_time},
-                                {"scene_note", note}, {"repeats", o.repeats},
-                                {"confidence", o.repeats > 1 ? nlohmann::json(confidence) : nullptr}, {"rows", out}}.dump(2)
+    std::cout << nlohmann::json{{"scene", scene.name},
+                                {"reference_spp", o.reference_spp},
+                                {"equal_time", o.run.equal_time},
+                                {"scene_note", note},
+                                {"repeats", o.repeats},
+                                {"confidence", o.repeats > 1 ? nlohmann::json(confidence) : nullptr},
+                                {"rows", out}}
+                     .dump(2)
               << "\n";
     return;
   }
   fmt::print("{:18} {:>7} {:>11} {:>11} {:>9} {:>11} {:>9} {:>9} {:>8}\n", "config", "spp", "MSE", "relMSE", "seconds",
              "efficiency", "MSE x", "eff. x", "low-f");
   for (const auto& r : rows)
-    fmt::print("{:18} {:>7} {:>11.4e} {:>11.4e} {:>9.3f} {:>11.4e} {:>9.2f} {:>9.2f} {:>8}\n", r.label, r.samples, r.mse,
-               r.relative_mse, r.seconds, r.efficiency, r.mse_ratio, r.efficiency_ratio,
+    fmt::print("{:18} {:>7} {:>11.4e} {:>11.4e} {:>9.3f} {:>11.4e} {:>9.2f} {:>9.2f} {:>8}\n", r.label, r.samples,
+               r.mse, r.relative_mse, r.seconds, r.efficiency, r.mse_ratio, r.efficiency_ratio,
                std::isfinite(r.low_frequency_power) ? fmt::format("{:.3f}", r.low_frequency_power) : std::string("-"));
   fmt::print("(low-f: the error's power below a quarter of Nyquist, white noise = 1, blue noise < 1)\n");
   if (o.repeats > 1) {
@@ -117,17 +130,20 @@ void run_compare(CompareCommand& o) {
       fmt::print("{:18} {:>22} {:>24} {:>24} {:>24}\n", rows[c].label,
                  fmt::format("{:.4e} ± {:.2e}", st.mse.mean, st.mse.standard_error), ratio(st.mse_ratio),
                  ratio(st.time_ratio),
-                 c == 0 ? std::string("1 (baseline)")
-                        : st.time_resolved ? ratio(st.efficiency_ratio) : fmt::format("times equal ±{:.2g}%", noise));
+                 c == 0             ? std::string("1 (baseline)")
+                 : st.time_resolved ? ratio(st.efficiency_ratio)
+                                    : fmt::format("times equal ±{:.2g}%", noise));
     }
-    fmt::print("({} seeds, every configuration rendered with each (paired): MSE and relMSE are means, seconds medians, "
-               "ratios geometric means with Student-t intervals on their logs; an efficiency ratio is given only where "
-               "the times differ beyond their noise)\n",
-               o.repeats);
+    fmt::print(
+        "({} seeds, every configuration rendered with each (paired): MSE and relMSE are means, seconds medians, "
+        "ratios geometric means with Student-t intervals on their logs; an efficiency ratio is given only where "
+        "the times differ beyond their noise)\n",
+        o.repeats);
   }
-  fmt::print("({}; ratios against the first row; efficiency = 1 / (MSE x seconds); reference: {} spp, cached in {})\n",
-             o.run.equal_time > 0 ? fmt::format("equal time: {} s each", o.run.equal_time) : std::string("equal samples"),
-             o.reference_spp, o.run.cache_dir);
+  fmt::print(
+      "({}; ratios against the first row; efficiency = 1 / (MSE x seconds); reference: {} spp, cached in {})\n",
+      o.run.equal_time > 0 ? fmt::format("equal time: {} s each", o.run.equal_time) : std::string("equal samples"),
+      o.reference_spp, o.run.cache_dir);
   if (!o.run.variance_dir.empty()) fmt::print("(variance images in {})\n", o.run.variance_dir);
   if (!note.empty()) fmt::print("(scene: {})\n", note);
 }
@@ -150,10 +166,12 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--height", o->height, "image height")->capture_default_str();
   add_threads_option(*command, o->threads, "threads");
   add_seed_option(*command, o->seed, "seed of the configurations (repeat k > 0: hash(seed, k))");
-  command->add_option("--repeats", o->repeats,
-                      "render every configuration with this many seeds, paired, for intervals on the ratios (1..1000)")
+  command
+      ->add_option("--repeats", o->repeats,
+                   "render every configuration with this many seeds, paired, for intervals on the ratios (1..1000)")
       ->capture_default_str();
-  command->add_option("--confidence", o->confidence, "level of the ratios' intervals with --repeats 2 or more (default 0.95)");
+  command->add_option("--confidence", o->confidence,
+                      "level of the ratios' intervals with --repeats 2 or more (default 0.95)");
   command->add_flag("--json", o->json, "JSON output");
   command->callback([o] { run_compare(*o); });
 }

@@ -25,7 +25,7 @@ struct ConvergeOptions {
   std::optional<std::int64_t> d;
   std::uint64_t seed = 0;
   std::int64_t runs = 32, threads = 0;
-  double confidence = 0.95;  ///< level of the slopes' confidence intervals
+  double confidence = 0.95;                           ///< level of the slopes' confidence intervals
   std::vector<std::string> integrand_params, params;  ///< --integrand-param; -p (every sampler's)
   std::string randomize;                              ///< --randomize (every sampler's)
   bool json = false;
@@ -50,17 +50,28 @@ nlohmann::json to_json(const sa::ConvergenceResult& result) {
   for (const auto& entry : result.samplers) {
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& row : entry.rows)
-      rows.push_back({{"n", row.n}, {"mean_error", row.mean_error}, {"rmse", row.rmse}, {"variance", row.variance},
-                      {"seconds", row.seconds}, {"efficiency", number(row.efficiency)}});
-    samplers.push_back({{"name", entry.sampler.name}, {"randomize", entry.sampler.randomize}, {"rows", rows},
-                        {"fitted", entry.fitted}, {"slope", number(entry.slope.slope)},
+      rows.push_back({{"n", row.n},
+                      {"mean_error", row.mean_error},
+                      {"rmse", row.rmse},
+                      {"variance", row.variance},
+                      {"seconds", row.seconds},
+                      {"efficiency", number(row.efficiency)}});
+    samplers.push_back({{"name", entry.sampler.name},
+                        {"randomize", entry.sampler.randomize},
+                        {"rows", rows},
+                        {"fitted", entry.fitted},
+                        {"slope", number(entry.slope.slope)},
                         {"slope_standard_error", number(entry.slope.slope_standard_error)},
                         {"slope_interval", {number(entry.interval.low), number(entry.interval.high)}},
                         {"slope_confidence", entry.interval.confidence},
                         {"slope_sampling_standard_error", number(entry.interval.standard_error)},
-                        {"intercept", number(entry.slope.intercept)}, {"skipped", skipped_json(entry)}});
+                        {"intercept", number(entry.slope.intercept)},
+                        {"skipped", skipped_json(entry)}});
   }
-  return {{"integrand", result.integrand}, {"d", result.d}, {"exact", result.exact}, {"runs", result.runs},
+  return {{"integrand", result.integrand},
+          {"d", result.d},
+          {"exact", result.exact},
+          {"runs", result.runs},
           {"samplers", samplers}};
 }
 
@@ -97,16 +108,17 @@ void run_converge(const ConvergeOptions& o) {
       fmt::print("\n{}:{}  slope of log {} vs log N: undefined (the {} is 0 or not finite at some N)\n",
                  entry.sampler.name, entry.sampler.randomize, entry.fitted, entry.fitted);
     else if (entry.fitted == "variance")
-      fmt::print("\n{}:{}  slope of log variance vs log N: {:.3f}, {:g}% interval [{:.3f}, {:.3f}] (jackknife SE {:.3f}; "
-                 "residual SE of the fit {:.3f})\n",
-                 entry.sampler.name, entry.sampler.randomize, entry.slope.slope, 100 * entry.interval.confidence,
-                 entry.interval.low, entry.interval.high, entry.interval.standard_error,
-                 entry.slope.slope_standard_error);
+      fmt::print(
+          "\n{}:{}  slope of log variance vs log N: {:.3f}, {:g}% interval [{:.3f}, {:.3f}] (jackknife SE {:.3f}; "
+          "residual SE of the fit {:.3f})\n",
+          entry.sampler.name, entry.sampler.randomize, entry.slope.slope, 100 * entry.interval.confidence,
+          entry.interval.low, entry.interval.high, entry.interval.standard_error, entry.slope.slope_standard_error);
     else
-      fmt::print("\n{}:{}  slope of log {} vs log N: {:.3f} ± {:.3f} (residual SE; the runs do not differ, so there "
-                 "is no sampling interval)\n",
-                 entry.sampler.name, entry.sampler.randomize, entry.fitted, entry.slope.slope,
-                 entry.slope.slope_standard_error);
+      fmt::print(
+          "\n{}:{}  slope of log {} vs log N: {:.3f} ± {:.3f} (residual SE; the runs do not differ, so there "
+          "is no sampling interval)\n",
+          entry.sampler.name, entry.sampler.randomize, entry.fitted, entry.slope.slope,
+          entry.slope.slope_standard_error);
     if (!entry.skipped.empty()) {
       std::string counts;
       for (const auto& skip : entry.skipped) counts += (counts.empty() ? "" : ",") + std::to_string(skip.n);
@@ -126,25 +138,30 @@ void add_converge_command(CLI::App& app) {
   auto o = std::make_shared<ConvergeOptions>();
   auto* command = app.add_subcommand("converge", "Convergence study: error and variance vs N for several samplers");
   command->add_option("--integrand", o->integrand, "integrand name (see `stratum integrate --list`)")->required();
-  command->add_option("--samplers", o->samplers,
-                      "sampler specs A,B,... each NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md); the list "
-                      "splits on commas outside parentheses")
+  command
+      ->add_option("--samplers", o->samplers,
+                   "sampler specs A,B,... each NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md); the list "
+                   "splits on commas outside parentheses")
       ->required();
-  auto* counts = command->add_option("--n", o->counts,
-                                     "A:B (powers of two), A:B:F (times F) or a comma list; with the default, each "
-                                     "sampler skips the counts it refuses (e.g. non-squares for 2D jittered) and "
-                                     "says so")
+  auto* counts = command
+                     ->add_option("--n", o->counts,
+                                  "A:B (powers of two), A:B:F (times F) or a comma list; with the default, each "
+                                  "sampler skips the counts it refuses (e.g. non-squares for 2D jittered) and "
+                                  "says so")
                      ->capture_default_str();
   command->add_option("-d", o->d, "dimension (default: the integrand's)");
   command->add_option("--runs", o->runs, "independent randomizations per N")->capture_default_str();
   add_seed_option(*command, o->seed, "seed; run r of sampler s at N uses hash(seed, s, N, r)");
   add_threads_option(*command, o->threads, "threads (results do not depend on it)");
-  command->add_option("--confidence", o->confidence,
-                      "level of each slope's confidence interval, in (0, 1) (jackknife over the runs, Student-t: "
-                      "docs/samplers.md)")
+  command
+      ->add_option("--confidence", o->confidence,
+                   "level of each slope's confidence interval, in (0, 1) (jackknife over the runs, Student-t: "
+                   "docs/samplers.md)")
       ->capture_default_str();
-  command->add_option("-p,--param", o->params, "sampler parameter KEY=VALUE for every sampler of --samplers (repeatable)");
-  command->add_option("--randomize", o->randomize, "randomizer for every sampler of --samplers (or give NAME:RANDOMIZER)");
+  command->add_option("-p,--param", o->params,
+                      "sampler parameter KEY=VALUE for every sampler of --samplers (repeatable)");
+  command->add_option("--randomize", o->randomize,
+                      "randomizer for every sampler of --samplers (or give NAME:RANDOMIZER)");
   command->add_option("--integrand-param", o->integrand_params, "integrand parameter KEY=V1,V2,... (repeatable)");
   add_spec_footer(*command);
   command->add_flag("--json", o->json, "print JSON");

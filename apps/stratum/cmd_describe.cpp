@@ -28,7 +28,9 @@ void run_describe(const DescribeOptions& o) {
   if (o.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& entry : entries)
-      list.push_back({{"kind", entry.kind}, {"name", entry.name}, {"description", entry.description},
+      list.push_back({{"kind", entry.kind},
+                      {"name", entry.name},
+                      {"description", entry.description},
                       {"params", params_json(*entry.params)}});
     fmt::print("{}\n", list.dump(2));
     return;

@@ -45,7 +45,8 @@ void run_discrepancy(const DiscrepancyOptions& o) {
     params[key] = value;
   }
   if (o.measure != "all") sa::find_measure(o.measure);  // an unknown name fails before any work
-  if (o.file.empty() && o.n && *o.n >= 1 && o.d.value_or(2) >= 1) {  // generated points: their memory and the measure's, first
+  if (o.file.empty() && o.n && *o.n >= 1 &&
+      o.d.value_or(2) >= 1) {  // generated points: their memory and the measure's, first
     const auto n = static_cast<std::size_t>(*o.n), d = static_cast<std::size_t>(o.d.value_or(2));
     for (const auto& m : sa::measures())
       if (m.name == o.measure || (o.measure == "all" && d >= m.min_dim && (m.max_dim == 0 || d <= m.max_dim)))
@@ -64,8 +65,7 @@ void run_discrepancy(const DiscrepancyOptions& o) {
       bool used = false;
       for (const auto& m : sa::measures())
         for (const auto& spec : m.params) used = used || spec.name == key;
-      if (!used)
-        throw invalid_argument("measure-param", key, "no measure takes it (see `stratum discrepancy --help`)");
+      if (!used) throw invalid_argument("measure-param", key, "no measure takes it (see `stratum discrepancy --help`)");
     }
     for (const auto& m : sa::measures()) {
       if (view.d < m.min_dim || (m.max_dim != 0 && view.d > m.max_dim)) continue;  // not defined for this d
@@ -85,9 +85,10 @@ void run_discrepancy(const DiscrepancyOptions& o) {
     for (const auto& [name, r] : results) list.push_back(result_json(name, r));
     for (const auto& [name, why] : skipped) skips.push_back({{"name", name}, {"reason", why}});
     const std::string source = o.file.empty() ? "sampler " + o.sampler : o.file;
-    fmt::print("{}\n", nlohmann::json{{"source", source}, {"n", points.n}, {"d", points.d}, {"measures", list},
-                                      {"skipped", skips}}
-                           .dump(2));
+    fmt::print(
+        "{}\n",
+        nlohmann::json{{"source", source}, {"n", points.n}, {"d", points.d}, {"measures", list}, {"skipped", skips}}
+            .dump(2));
     return;
   }
   for (const auto& [name, r] : results) fmt::print("{}\n", result_text(name, r));

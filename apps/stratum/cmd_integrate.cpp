@@ -38,8 +38,12 @@ void print_integrands(bool json) {
     const nlohmann::json params = params_json(info.params);
     std::string param_text;
     for (const auto& p : info.params) param_text += fmt::format(" {}={}", p.name, p.default_value);
-    out.push_back({{"name", info.name}, {"description", info.description}, {"min_dim", info.min_dim},
-                   {"max_dim", info.max_dim}, {"default_dim", info.default_dim}, {"properties", info.properties},
+    out.push_back({{"name", info.name},
+                   {"description", info.description},
+                   {"min_dim", info.min_dim},
+                   {"max_dim", info.max_dim},
+                   {"default_dim", info.default_dim},
+                   {"properties", info.properties},
                    {"params", params}});
     if (!json)
       fmt::print("{:<20} d {:>2}-{:<4} {}{}\n", info.name, info.min_dim, info.max_dim, info.description,
@@ -60,7 +64,9 @@ void run_integrate(const IntegrateOptions& o) {
           "must be a positive integer");
   require(o.runs >= 1 && o.runs <= 1000000, "runs", o.runs, "must be in [1, 1000000]");
   sa::IntegrationRequest request;
-  request.integrand = {o.integrand, static_cast<unsigned>(o.d.value_or(0)), sa::parse_integrand_params(o.integrand, parse_key_values("integrand-param", o.integrand_params))};
+  request.integrand = {
+      o.integrand, static_cast<unsigned>(o.d.value_or(0)),
+      sa::parse_integrand_params(o.integrand, parse_key_values("integrand-param", o.integrand_params))};
   const SamplerSpec spec = o.sampler.spec();
   request.sampler = {spec.name, spec.randomize, spec.params};
   request.n = static_cast<std::uint64_t>(*o.n);
@@ -82,24 +88,40 @@ void run_integrate(const IntegrateOptions& o) {
   nlohmann::json steps = nlohmann::json::array();
   std::string step_counts;
   for (const auto& step : tolerance.steps) {
-    steps.push_back({{"n", step.n}, {"estimate", step.estimate}, {"half_width", step.half_width},
-                     {"target", step.target}, {"seconds", step.seconds}});
+    steps.push_back({{"n", step.n},
+                     {"estimate", step.estimate},
+                     {"half_width", step.half_width},
+                     {"target", step.target},
+                     {"seconds", step.seconds}});
     step_counts += (step_counts.empty() ? "" : ", ") + std::to_string(step.n);
   }
   if (o.json) {
-    nlohmann::json out = {{"integrand", r.integrand}, {"sampler", r.sampler}, {"randomize", r.randomize},
-                                {"d", r.d}, {"n", r.n}, {"runs", r.runs}, {"seed", o.sampler.seed},
-                                {"estimate", r.estimate},
-                                {"standard_error", std::isfinite(r.standard_error) ? nlohmann::json(r.standard_error)
-                                                                                   : nlohmann::json(nullptr)},
-                                {"standard_error_kind", r.standard_error_kind}, {"exact", r.exact},
-                                {"error", r.error}, {"seconds", r.seconds}, {"run_estimates", r.run_estimates},
-                                {"confidence", r.confidence}, {"interval", {finite(r.interval_low), finite(r.interval_high)}},
-                                {"half_width", finite(r.half_width)}, {"seconds_per_run", r.seconds_per_run},
-                                {"efficiency", finite(r.efficiency)}};
+    nlohmann::json out = {{"integrand", r.integrand},
+                          {"sampler", r.sampler},
+                          {"randomize", r.randomize},
+                          {"d", r.d},
+                          {"n", r.n},
+                          {"runs", r.runs},
+                          {"seed", o.sampler.seed},
+                          {"estimate", r.estimate},
+                          {"standard_error", std::isfinite(r.standard_error) ? nlohmann::json(r.standard_error)
+                                                                             : nlohmann::json(nullptr)},
+                          {"standard_error_kind", r.standard_error_kind},
+                          {"exact", r.exact},
+                          {"error", r.error},
+                          {"seconds", r.seconds},
+                          {"run_estimates", r.run_estimates},
+                          {"confidence", r.confidence},
+                          {"interval", {finite(r.interval_low), finite(r.interval_high)}},
+                          {"half_width", finite(r.half_width)},
+                          {"seconds_per_run", r.seconds_per_run},
+                          {"efficiency", finite(r.efficiency)}};
     if (to_tolerance)
-      out["tolerance"] = {{"abs_tol", o.abs_tol.value_or(0)}, {"rel_tol", o.rel_tol.value_or(0)},
-                          {"target", tolerance.target}, {"met", tolerance.met}, {"steps", steps}};
+      out["tolerance"] = {{"abs_tol", o.abs_tol.value_or(0)},
+                          {"rel_tol", o.rel_tol.value_or(0)},
+                          {"target", tolerance.target},
+                          {"met", tolerance.met},
+                          {"steps", steps}};
     fmt::print("{}\n", out.dump(2));
     return;
   }
@@ -107,19 +129,22 @@ void run_integrate(const IntegrateOptions& o) {
              r.randomize, r.n, r.runs);
   const std::string standard_error =
       r.standard_error_kind == "identical-runs"
-          ? fmt::format("unavailable: the {} runs gave identical estimates ({}:{} is not randomized; choose a "
-                        "randomizer, e.g. :cp)",
-                        r.runs, r.sampler, r.randomize)
-          : fmt::format("{:.6g} ({})", r.standard_error,
-                        r.standard_error_kind == "iid" ? "iid: s/sqrt(n) of one point set" : "from the runs' replicates");
+          ? fmt::format(
+                "unavailable: the {} runs gave identical estimates ({}:{} is not randomized; choose a "
+                "randomizer, e.g. :cp)",
+                r.runs, r.sampler, r.randomize)
+          : fmt::format(
+                "{:.6g} ({})", r.standard_error,
+                r.standard_error_kind == "iid" ? "iid: s/sqrt(n) of one point set" : "from the runs' replicates");
   fmt::print("estimate        {:.17g}\nstandard error  {}\nexact           {:.17g}\nerror           {:.6g}\n",
              r.estimate, standard_error, r.exact, r.error);
   if (std::isfinite(r.half_width))
-    fmt::print("{:.4g}% interval [{:.10g}, {:.10g}] (estimate ± {:.4g}, Student-t over {})\n"
-               "efficiency      {:.6g} (1 / (variance × seconds), {:.4g} s per run)\n",
-               100 * r.confidence, r.interval_low, r.interval_high, r.half_width,
-               r.runs >= 2 ? fmt::format("{} runs", r.runs) : std::string("the n values: iid"), r.efficiency,
-               r.seconds_per_run);
+    fmt::print(
+        "{:.4g}% interval [{:.10g}, {:.10g}] (estimate ± {:.4g}, Student-t over {})\n"
+        "efficiency      {:.6g} (1 / (variance × seconds), {:.4g} s per run)\n",
+        100 * r.confidence, r.interval_low, r.interval_high, r.half_width,
+        r.runs >= 2 ? fmt::format("{} runs", r.runs) : std::string("the n values: iid"), r.efficiency,
+        r.seconds_per_run);
   if (to_tolerance)
     fmt::print("tolerance       {}: half-width {:.4g} {} target {:.4g} at n = {} ({} steps: n = {})\n",
                tolerance.met ? "met" : "NOT met (max-n reached)", r.half_width, tolerance.met ? "<=" : ">",
@@ -138,8 +163,9 @@ void add_integrate_command(CLI::App& app) {
   command->add_option("--runs", o->runs, "independent randomizations (>= 2: replicate standard error)")
       ->capture_default_str();
   add_threads_option(*command, o->threads, "threads");
-  command->add_option("--confidence", o->confidence,
-                      "level of the confidence interval, in (0, 1) (Student-t over the runs' replicates)")
+  command
+      ->add_option("--confidence", o->confidence,
+                   "level of the confidence interval, in (0, 1) (Student-t over the runs' replicates)")
       ->capture_default_str();
   command->add_option("--abs-tol", o->abs_tol,
                       "integrate to a tolerance: double n until the interval's half-width <= max(abs-tol, rel-tol x "

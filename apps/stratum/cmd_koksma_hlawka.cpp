@@ -36,8 +36,11 @@ void print_functions(bool json) {
   nlohmann::json list = nlohmann::json::array();
   for (const auto& f : sa::variation_test_functions()) {
     if (json)
-      list.push_back({{"function", f.name}, {"formula", f.formula}, {"integral", f.integral},
-                      {"variation", f.variation}, {"derivation", f.derivation}});
+      list.push_back({{"function", f.name},
+                      {"formula", f.formula},
+                      {"integral", f.integral},
+                      {"variation", f.variation},
+                      {"derivation", f.derivation}});
     else
       fmt::print("{:<12} {:<16} integral {:<20} V_HK {:<20} {}\n", f.name, f.formula, f.integral, f.variation,
                  f.derivation);
@@ -47,8 +50,8 @@ void print_functions(bool json) {
 
 void run_koksma_hlawka(const KoksmaHlawkaOptions& o) {
   if (o.list) {
-    const std::string extra = !o.file.empty()      ? o.file
-                              : !o.sampler.empty() ? "--sampler " + o.sampler
+    const std::string extra = !o.file.empty()        ? o.file
+                              : !o.sampler.empty()   ? "--sampler " + o.sampler
                               : o.n || o.d || o.star ? "with -n, -d or --star"
                                                      : "";
     if (!extra.empty())
@@ -72,13 +75,21 @@ void run_koksma_hlawka(const KoksmaHlawkaOptions& o) {
   if (o.json) {
     nlohmann::json rows = nlohmann::json::array();
     for (std::size_t i = 0; i < checks.size(); ++i)
-      rows.push_back({{"function", checks[i].function}, {"formula", functions[i].formula},
-                      {"integral", functions[i].integral}, {"variation", functions[i].variation},
-                      {"estimate", checks[i].estimate}, {"error", checks[i].error}, {"bound", checks[i].bound},
+      rows.push_back({{"function", checks[i].function},
+                      {"formula", functions[i].formula},
+                      {"integral", functions[i].integral},
+                      {"variation", functions[i].variation},
+                      {"estimate", checks[i].estimate},
+                      {"error", checks[i].error},
+                      {"bound", checks[i].bound},
                       {"holds", checks[i].holds}});
     const std::string source = o.file.empty() ? "sampler " + o.sampler : o.file;
-    fmt::print("{}\n", nlohmann::json{{"source", source}, {"n", points.n}, {"star", star}, {"star_kind", star_kind},
-                                      {"holds", holding}, {"checks", rows}}
+    fmt::print("{}\n", nlohmann::json{{"source", source},
+                                      {"n", points.n},
+                                      {"star", star},
+                                      {"star_kind", star_kind},
+                                      {"holds", holding},
+                                      {"checks", rows}}
                            .dump(2));
     return;
   }
@@ -86,8 +97,8 @@ void run_koksma_hlawka(const KoksmaHlawkaOptions& o) {
              star_kind, holding, checks.size());
   fmt::print("{:<12} {:<16} {:<22} {:<22} {:<22} {}\n", "function", "formula", "estimate", "error", "bound", "holds");
   for (std::size_t i = 0; i < checks.size(); ++i)
-    fmt::print("{:<12} {:<16} {:<22} {:<22} {:<22} {}\n", checks[i].function, functions[i].formula,
-               checks[i].estimate, checks[i].error, checks[i].bound, checks[i].holds ? "yes" : "NO");
+    fmt::print("{:<12} {:<16} {:<22} {:<22} {:<22} {}\n", checks[i].function, functions[i].formula, checks[i].estimate,
+               checks[i].error, checks[i].bound, checks[i].holds ? "yes" : "NO");
 }
 }  // namespace
 

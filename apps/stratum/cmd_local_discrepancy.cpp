@@ -52,14 +52,17 @@ void run_local(const LocalOptions& o) {
 
 void add_local_discrepancy_command(CLI::App& app) {
   auto o = std::make_shared<LocalOptions>();
-  auto* command = app.add_subcommand("local-discrepancy",
-                                     "Local discrepancy n(x,y)/N - xy of 2D points on a grid of corners; --box: where D* is");
+  auto* command = app.add_subcommand(
+      "local-discrepancy", "Local discrepancy n(x,y)/N - xy of 2D points on a grid of corners; --box: where D* is");
   add_point_input_options(*command, *o);
   command->add_option("-r,--resolution", o->resolution, "R: the grid's corners are (i/R, j/R), i, j = 0..R (1..4096)")
       ->capture_default_str();
-  command->add_flag("--box", o->box, "print the box [0,x) x [0,y) attaining D* (O(N^2), N <= 20000); the grid then goes only to -o FILE");
+  command->add_flag(
+      "--box", o->box,
+      "print the box [0,x) x [0,y) attaining D* (O(N^2), N <= 20000); the grid then goes only to -o FILE");
   command->add_option("--format", o->format, "txt|csv|npy (default: by the -o extension, else txt)");
-  command->add_option("-o,--output", o->output, "output file: (R+1) rows of R+1 values, row j for y = j/R (stdout when absent)");
+  command->add_option("-o,--output", o->output,
+                      "output file: (R+1) rows of R+1 values, row j for y = j/R (stdout when absent)");
   command->callback([o] { run_local(*o); });
 }
 

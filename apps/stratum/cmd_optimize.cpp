@@ -40,16 +40,19 @@ void run_blue_noise(const OptimizeOptions& o) {
   file.prepare();  // refused before the work
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::BlueNoisePairReport> report;
-  const BlueNoiseTable table = analysis::optimize_blue_noise(options, &report, [&](std::uint32_t pair, std::uint32_t pairs) {
-    if (!o.quiet) fmt::print(stderr, "optimizing pair {} of {}\n", pair + 1, pairs);
-  });
+  const BlueNoiseTable table =
+      analysis::optimize_blue_noise(options, &report, [&](std::uint32_t pair, std::uint32_t pairs) {
+        if (!o.quiet) fmt::print(stderr, "optimizing pair {} of {}\n", pair + 1, pairs);
+      });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string bytes = serialize_blue_noise_table(table);
   file.write([&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
   file.commit();
-  fmt::print("# blue-noise rank tile {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes in {:.1f} s\n",
-             table.size, table.size, table.dims, table.seed, table.max_spp, table.integrands, table.sweeps, bytes.size(),
-             seconds);
+  fmt::print(
+      "# blue-noise rank tile {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes in {:.1f} "
+      "s\n",
+      table.size, table.size, table.dims, table.seed, table.max_spp, table.integrands, table.sweeps, bytes.size(),
+      seconds);
   fmt::print("# energy: blurred error over the test integrands, white = 1\n");
   fmt::print("# {:>4} {:>10} {:>10} {:>10}\n", "pair", "initial", "final", "accepted");
   for (std::size_t p = 0; p < report.size(); ++p)
@@ -66,7 +69,8 @@ void add_optimize_command(CLI::App& app) {
   auto o = std::make_shared<OptimizeOptions>();
   auto* command = optimize->add_subcommand(
       "blue-noise",
-      "sobol-bn's per-pixel ranks (which block of the shared Owen-scrambled Sobol' sequence a pixel takes), swapped between pixels so that the blurred error of test heavisides is "
+      "sobol-bn's per-pixel ranks (which block of the shared Owen-scrambled Sobol' sequence a pixel takes), swapped "
+      "between pixels so that the blurred error of test heavisides is "
       "small (Heitz et al. 2019; Belcour & Heitz 2021); deterministic: the same options give the same bytes");
   command->add_option("--size", o->size, "tile side in pixels, a power of 2 in [16, 256]")->capture_default_str();
   command->add_option("--dims", o->dims, "dimensions covered (even, [2, 64]; pairs optimized one by one)")

@@ -30,7 +30,8 @@ struct PairCorrelationOptions : PointInput {
 
 void run_pair_correlation(const PairCorrelationOptions& o) {
   require(o.count >= 1 && o.count <= 100000, "count", o.count, "must be an integer in [1, 100000]");
-  if (o.json && !o.format.empty()) throw invalid_argument("format", o.format, "--json prints JSON; give one of the two");
+  if (o.json && !o.format.empty())
+    throw invalid_argument("format", o.format, "--json prints JSON; give one of the two");
   if (o.json && !o.output.empty()) throw invalid_argument("output", o.output, "--json prints to stdout");
   TableOutput table_output(o.output, o.format);  // checked before the work
   const PointSet points = load_points(o);
@@ -54,11 +55,14 @@ void run_pair_correlation(const PairCorrelationOptions& o) {
 
 void add_pair_correlation_command(CLI::App& app) {
   auto o = std::make_shared<PairCorrelationOptions>();
-  auto* command = app.add_subcommand(
-      "pair-correlation", "Pair correlation g(r) of a point set (toroidal, Gaussian kernel): 1 for white noise, 0 inside blue noise's radius");
+  auto* command = app.add_subcommand("pair-correlation",
+                                     "Pair correlation g(r) of a point set (toroidal, Gaussian kernel): 1 for white "
+                                     "noise, 0 inside blue noise's radius");
   add_point_input_options(*command, *o);
-  command->add_option("--radii", o->radii, "radii r at which to estimate g, comma-separated (default: --count radii up to "
-                                           "2.5 densest-packing distances)")
+  command
+      ->add_option("--radii", o->radii,
+                   "radii r at which to estimate g, comma-separated (default: --count radii up to "
+                   "2.5 densest-packing distances)")
       ->delimiter(',');
   command->add_option("--count", o->count, "how many default radii (1..100000)")->capture_default_str();
   command->add_option("--sigma", o->sigma, "the kernel's standard deviation (default: 0.1 densest-packing distance)");

@@ -76,7 +76,8 @@ void run_render(RenderOptions& options) {
     const std::string key = render::scene_fingerprint(scene), spp_text = std::to_string(options.reference_spp);
     const auto spp = std::uint32_t(options.reference_spp);
     image = render::reference_image(scene, key, options.settings, spp, options.cache, &cached);
-    fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text, cached ? "loaded from the cache" : "rendered and cached in",
+    fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text,
+               cached ? "loaded from the cache" : "rendered and cached in",
                render::reference_cache_path(scene, key, options.settings, spp, options.cache));
   } else {
     // A first Ctrl-C stops the render within a tile and keeps its partial
@@ -94,14 +95,15 @@ void run_render(RenderOptions& options) {
   if (image.stopped) {
     if (show) fmt::print(stderr, "\n");
     throw interrupted(fmt::format(
-        "stopped by Ctrl-C: {} holds the {} of {} passes completed ({} of {} spp per pixel{})", options.output, image.passes,
-        std::clamp<std::uint32_t>(options.settings.passes, 1, options.settings.sampler.spp), image.samples,
-        options.settings.sampler.spp,
-        image.partial_pass > 0 ? fmt::format("; {:.0f}% of the tiles also the next pass", 100 * image.partial_pass) : ""));
+        "stopped by Ctrl-C: {} holds the {} of {} passes completed ({} of {} spp per pixel{})", options.output,
+        image.passes, std::clamp<std::uint32_t>(options.settings.passes, 1, options.settings.sampler.spp),
+        image.samples, options.settings.sampler.spp,
+        image.partial_pass > 0 ? fmt::format("; {:.0f}% of the tiles also the next pass", 100 * image.partial_pass)
+                               : ""));
   }
   if (!options.quiet)
-    fmt::print("{}: {}x{}, {} spp, {:.2f} s{}\n", options.output, image.width, image.height, image.samples, image.seconds,
-               options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
+    fmt::print("{}: {}x{}, {} spp, {:.2f} s{}\n", options.output, image.width, image.height, image.samples,
+               image.seconds, options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
 }
 
 }  // namespace
@@ -116,16 +118,18 @@ void add_render_command(CLI::App& app) {
   command->add_option("--spp", options->spp, "eye rays per pixel")->capture_default_str();
   command->add_option("--integrator", s.integrator, "direct|irradiance|path")->capture_default_str();
   command->add_option("--light-samples", s.light_samples, "shadow rays per eye ray (M)")->capture_default_str();
-  command->add_option("--light-strategy", s.light_strategy, "area|solid-angle|projected-solid-angle|bsdf|mis")->capture_default_str();
+  command->add_option("--light-strategy", s.light_strategy, "area|solid-angle|projected-solid-angle|bsdf|mis")
+      ->capture_default_str();
   command->add_option("--hemisphere", s.hemisphere, "irradiance sampling: uniform|cosine")->capture_default_str();
   command->add_option("--max-depth", s.max_depth, "longest path")->capture_default_str();
   add_sampler_options(*command, options->sampler, "the pixel sampler (a registry sampler that takes spp points in 2D)",
                       "seed")
       ->capture_default_str();
   command->add_option("--time-pattern", s.sampler.time_pattern, "random|cook|magic-square (spp = m^2)");
-  command->add_option("--frame", options->frame,
-                      "animation frame K: continues each pixel's sequence (samples K*spp..) for a progressive "
-                      "sampler, a fresh seed otherwise (docs/render.md)")
+  command
+      ->add_option("--frame", options->frame,
+                   "animation frame K: continues each pixel's sequence (samples K*spp..) for a progressive "
+                   "sampler, a fresh seed otherwise (docs/render.md)")
       ->capture_default_str();
   add_threads_option(*command, s.threads, "threads");
   command->add_option("--passes", s.passes, "progressive passes")->capture_default_str();
@@ -135,7 +139,8 @@ void add_render_command(CLI::App& app) {
   command->add_option("--variance", options->variance, "also write the variance of each pixel's mean (.exr)");
   command->add_flag("--reference", options->reference,
                     "render the converged reference of this estimand (Owen-scrambled Sobol', cached) instead");
-  command->add_option("--reference-spp", options->reference_spp, "samples per pixel of --reference")->capture_default_str();
+  command->add_option("--reference-spp", options->reference_spp, "samples per pixel of --reference")
+      ->capture_default_str();
   command->add_option("--cache", options->cache, "folder of cached references")->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "no progress bar or summary");
   command->callback([options] { run_render(*options); });

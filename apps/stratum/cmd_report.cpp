@@ -51,18 +51,21 @@ void run_report(ReportCliOptions& options) {
 
 void add_report_command(CLI::App& app) {
   auto options = std::make_shared<ReportCliOptions>();
-  auto* command = app.add_subcommand("report", "Reproduce the lecture as an HTML page: every section's figures and measurements");
+  auto* command =
+      app.add_subcommand("report", "Reproduce the lecture as an HTML page: every section's figures and measurements");
   command->add_option("-o,--directory", options->report.directory, "Folder for index.html, report.json and figures/")
       ->capture_default_str();
   command->add_flag("--quick", options->report.quick, "Smaller N, runs and spp (about a minute); same sections");
-  command->add_option("--sampler", options->report.extra_samplers,
-                      "Extra sampler, a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md), added to the pattern "
-                      "comparisons; repeatable");
+  command->add_option(
+      "--sampler", options->report.extra_samplers,
+      "Extra sampler, a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md), added to the pattern "
+      "comparisons; repeatable");
   add_spec_footer(*command);
   command->add_option("--only", options->only, "Comma-separated section ids to run (see --list)");
   add_threads_option(*command, options->threads, "Worker threads");
   add_seed_option(*command, options->report.seed, "Seed of every randomized measurement");
-  command->add_option("--cache", options->report.cache_dir, "Folder of cached reference renders")->capture_default_str();
+  command->add_option("--cache", options->report.cache_dir, "Folder of cached reference renders")
+      ->capture_default_str();
   command->add_flag("--list", options->list, "List the sections and exit");
   command->callback([options] { run_report(*options); });
 }

@@ -14,9 +14,15 @@ namespace stratum::cli {
 
 static nlohmann::json sampler_json(const SamplerInfo& s) {
   const nlohmann::json params = params_json(s.params);
-  return {{"name", s.name},         {"kind", s.kind},     {"description", s.description},
-          {"min_dim", s.min_dim},   {"max_dim", s.max_dim}, {"properties", s.properties},
-          {"randomizers", s.randomizers}, {"counts", s.counts}, {"params", params}};
+  return {{"name", s.name},
+          {"kind", s.kind},
+          {"description", s.description},
+          {"min_dim", s.min_dim},
+          {"max_dim", s.max_dim},
+          {"properties", s.properties},
+          {"randomizers", s.randomizers},
+          {"counts", s.counts},
+          {"params", params}};
 }
 
 void add_samplers_command(CLI::App& app) {

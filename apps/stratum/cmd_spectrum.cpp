@@ -89,20 +89,22 @@ void run_image_spectrum(const SpectrumOptions& o) {
   const sa::ImageSpectrum s = sa::image_spectrum(values, image.width, image.height);
   nlohmann::json power = nlohmann::json::array();
   for (double p : s.radial_power) power.push_back(std::isfinite(p) ? nlohmann::json(p) : nullptr);
-  const nlohmann::json data = {{"source", o.image},
-                               {"reference", o.reference.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.reference)},
-                               {"width", s.width},
-                               {"height", s.height},
-                               {"variance", s.variance},
-                               {"low_frequency_power", s.low_frequency_power},
-                               {"radial", {{"frequency", s.radial_frequency}, {"power", power}}}};
+  const nlohmann::json data = {
+      {"source", o.image},
+      {"reference", o.reference.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.reference)},
+      {"width", s.width},
+      {"height", s.height},
+      {"variance", s.variance},
+      {"low_frequency_power", s.low_frequency_power},
+      {"radial", {{"frequency", s.radial_frequency}, {"power", power}}}};
   if (o.json) {
     fmt::print("{}\n", data.dump(2));
     return;
   }
   fmt::print("# spectrum of the luminance of {}{} ({}x{}), normalized: white noise = 1\n", o.image,
              o.reference.empty() ? "" : " - " + o.reference, s.width, s.height);
-  fmt::print("low_frequency_power {:.6g}   (mean below a quarter of Nyquist; < 1: blue noise)\n", s.low_frequency_power);
+  fmt::print("low_frequency_power {:.6g}   (mean below a quarter of Nyquist; < 1: blue noise)\n",
+             s.low_frequency_power);
   fmt::print("variance            {:.6g}\n", s.variance);
   fmt::print("# {:>10} {:>12}\n", "frequency", "power");
   for (std::size_t r = 0; r < s.radial_power.size(); ++r)
@@ -124,8 +126,8 @@ void run_spectrum(const SpectrumOptions& o) {
   for (const auto& s : sets) views.push_back({s.data.get(), s.n, s.d});
   const std::size_t n = views.front().n;
   // Default K: 2.5 √N (the first peak of blue noise lies near √N), at least 16.
-  const int k = static_cast<int>(o.max_frequency.value_or(
-      std::min<std::int64_t>(1024, std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(2.5 * std::sqrt(n)))))));
+  const int k = static_cast<int>(o.max_frequency.value_or(std::min<std::int64_t>(
+      1024, std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(2.5 * std::sqrt(n)))))));
   const sa::Periodogram p = sa::mean_periodogram(views, k, static_cast<unsigned>(o.threads));
   const sa::RadialPower radial = sa::radial_average(p);
   const sa::BlueNoiseFigures figures = sa::blue_noise_figures(radial);
@@ -169,7 +171,8 @@ void run_spectrum(const SpectrumOptions& o) {
 void add_spectrum_command(CLI::App& app) {
   auto o = std::make_shared<SpectrumOptions>();
   auto* command = app.add_subcommand(
-      "spectrum", "Fourier spectrum of a 2D (or 1D) point set: radial power, anisotropy, effective Nyquist, oscillation");
+      "spectrum",
+      "Fourier spectrum of a 2D (or 1D) point set: radial power, anisotropy, effective Nyquist, oscillation");
   command->add_option("files", o->files, "point files, one per realization (.txt, .csv, .npy); or use --sampler");
   add_sampler_options(*command, *o, "use this sampler's 2D points (realization r: seed + r)",
                       "seed of the first realization");

@@ -52,12 +52,19 @@ nlohmann::json numbers(const std::vector<double>& values) {
 nlohmann::json to_json(const sa::DimensionStudy& study) {
   nlohmann::json series = nlohmann::json::array();
   for (const auto& s : study.series)
-    series.push_back({{"d", s.d}, {"exact", s.exact}, {"variance", s.variance >= 0 ? number(s.variance) : nullptr},
-                      {"m", s.m}, {"n", s.n}, {"product_error", numbers(s.product_error)},
-                      {"mc_rmse", numbers(s.mc_rmse)}, {"mc_predicted", numbers(s.mc_predicted)},
-                      {"sobol_rmse", numbers(s.sobol_rmse)}, {"product_slope", number(s.product_slope)},
+    series.push_back({{"d", s.d},
+                      {"exact", s.exact},
+                      {"variance", s.variance >= 0 ? number(s.variance) : nullptr},
+                      {"m", s.m},
+                      {"n", s.n},
+                      {"product_error", numbers(s.product_error)},
+                      {"mc_rmse", numbers(s.mc_rmse)},
+                      {"mc_predicted", numbers(s.mc_predicted)},
+                      {"sobol_rmse", numbers(s.sobol_rmse)},
+                      {"product_slope", number(s.product_slope)},
                       {"product_predicted_slope", number(s.product_predicted_slope)},
-                      {"mc_slope", number(s.mc_slope)}, {"sobol_slope", number(s.sobol_slope)}});
+                      {"mc_slope", number(s.mc_slope)},
+                      {"sobol_slope", number(s.sobol_slope)}});
   return {{"rule", study.rule}, {"integrand", study.integrand}, {"runs", study.runs}, {"series", series}};
 }
 

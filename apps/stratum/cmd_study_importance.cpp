@@ -31,20 +31,30 @@ struct ImportanceOptions {
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
 nlohmann::json to_json(const sa::MethodResult& m) {
-  return {{"method", m.method}, {"estimate", m.estimate}, {"estimate_stderr", number(m.estimate_stderr)},
-          {"variance", m.variance}, {"variance_stderr", number(m.variance_stderr)},
-          {"predicted_variance", number(m.predicted_variance)}, {"seconds_per_sample", m.seconds_per_sample},
+  return {{"method", m.method},
+          {"estimate", m.estimate},
+          {"estimate_stderr", number(m.estimate_stderr)},
+          {"variance", m.variance},
+          {"variance_stderr", number(m.variance_stderr)},
+          {"predicted_variance", number(m.predicted_variance)},
+          {"seconds_per_sample", m.seconds_per_sample},
           {"efficiency", number(m.efficiency)}};
 }
 
 nlohmann::json to_json(const std::vector<sa::ImportanceComparison>& list) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& c : list)
-    rows.push_back({{"scene", c.scene}, {"size", c.size}, {"distance", c.distance}, {"exact", c.exact},
-                    {"a", to_json(c.a)}, {"b", to_json(c.b)}, {"variance_ratio", number(c.variance_ratio)},
+    rows.push_back({{"scene", c.scene},
+                    {"size", c.size},
+                    {"distance", c.distance},
+                    {"exact", c.exact},
+                    {"a", to_json(c.a)},
+                    {"b", to_json(c.b)},
+                    {"variance_ratio", number(c.variance_ratio)},
                     {"variance_ratio_stderr", number(c.variance_ratio_stderr)},
                     {"predicted_variance_ratio", number(c.predicted_variance_ratio)},
-                    {"time_ratio", number(c.time_ratio)}, {"efficiency_ratio", number(c.efficiency_ratio)}});
+                    {"time_ratio", number(c.time_ratio)},
+                    {"efficiency_ratio", number(c.efficiency_ratio)}});
   return rows;
 }
 
@@ -70,8 +80,10 @@ void run_importance(const ImportanceOptions& o) {
   request.seed = o.seed;
   request.threads = static_cast<unsigned>(o.threads);
   const sa::ImportanceStudy study = sa::run_importance_study(request);
-  const nlohmann::json data = {{"runs", study.runs}, {"samples", study.samples},
-                               {"hemisphere", to_json(study.hemisphere)}, {"light", to_json(study.light)}};
+  const nlohmann::json data = {{"runs", study.runs},
+                               {"samples", study.samples},
+                               {"hemisphere", to_json(study.hemisphere)},
+                               {"light", to_json(study.light)}};
   if (figure) plot::write_plot("importance", data, *figure);
   if (o.json) return fmt::print("{}\n", data.dump(2));
   fmt::print("irradiance at a point (normal +z), {} runs x {} samples per method; variances per sample\n", study.runs,
@@ -86,11 +98,14 @@ void run_importance(const ImportanceOptions& o) {
 
 void add_study_importance_command(CLI::App& study) {
   auto o = std::make_shared<ImportanceOptions>();
-  auto* command = study.add_subcommand("importance", "Importance sampling: cosine vs uniform, solid angle vs area (§3)");
+  auto* command =
+      study.add_subcommand("importance", "Importance sampling: cosine vs uniform, solid angle vs area (§3)");
   command->add_option("--runs", o->runs, "independent replicates per method")->capture_default_str();
   command->add_option("--samples", o->samples, "samples per replicate")->capture_default_str();
   command->add_option("--sizes", o->sizes, "light sides for study (b)")->delimiter(',')->capture_default_str();
-  command->add_option("--distances", o->distances, "light heights for study (b)")->delimiter(',')->capture_default_str();
+  command->add_option("--distances", o->distances, "light heights for study (b)")
+      ->delimiter(',')
+      ->capture_default_str();
   add_seed_option(*command, o->seed, "seed of the random numbers");
   add_threads_option(*command, o->threads, "threads (results other than timings do not depend on it)");
   command->add_flag("--json", o->json, "print JSON");

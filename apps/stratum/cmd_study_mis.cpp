@@ -46,25 +46,36 @@ void run_mis(const MisOptions& o) {
     for (const auto& c : study.cases) {
       nlohmann::json methods = nlohmann::json::array();
       for (const auto& m : c.methods)
-        methods.push_back({{"method", m.method}, {"estimate", m.estimate}, {"estimate_stderr", m.estimate_stderr},
-                           {"variance", m.variance}, {"variance_stderr", m.variance_stderr},
+        methods.push_back({{"method", m.method},
+                           {"estimate", m.estimate},
+                           {"estimate_stderr", m.estimate_stderr},
+                           {"variance", m.variance},
+                           {"variance_stderr", m.variance_stderr},
                            {"predicted_variance", m.predicted_variance}});
-      cases.push_back({{"exponent", c.exponent}, {"angle", c.angle}, {"exact", c.exact}, {"methods", methods},
-                       {"best_single", c.best_single}, {"balance_over_best", number(c.balance_over_best)},
-                       {"power_over_best", number(c.power_over_best)}, {"balance_bound", c.balance_bound}});
+      cases.push_back({{"exponent", c.exponent},
+                       {"angle", c.angle},
+                       {"exact", c.exact},
+                       {"methods", methods},
+                       {"best_single", c.best_single},
+                       {"balance_over_best", number(c.balance_over_best)},
+                       {"power_over_best", number(c.power_over_best)},
+                       {"balance_bound", c.balance_bound}});
     }
-    const nlohmann::json out = {{"runs", study.runs}, {"samples", study.samples}, {"beta", study.beta}, {"cases", cases}};
+    const nlohmann::json out = {
+        {"runs", study.runs}, {"samples", study.samples}, {"beta", study.beta}, {"cases", cases}};
     return io::write_stdout([&](std::ostream& stream) { stream << out.dump(2) << '\n'; });
   }
-  fmt::print("reflected radiance of a Phong lobe (exponent e) from a round light (half-angle a, radiance 1);\n"
-             "per-sample variances over {} runs x {} samples (MIS: half from each strategy, power beta = {}); "
-             "(predicted)\n\n",
-             study.runs, study.samples, study.beta);
+  fmt::print(
+      "reflected radiance of a Phong lobe (exponent e) from a round light (half-angle a, radiance 1);\n"
+      "per-sample variances over {} runs x {} samples (MIS: half from each strategy, power beta = {}); "
+      "(predicted)\n\n",
+      study.runs, study.samples, study.beta);
   fmt::print("{:>7} {:>6} {:>10}  {:>21} {:>21} {:>21} {:>21} {:>9} {:>9}\n", "e", "a(deg)", "exact", "light", "bsdf",
              "balance", "power", "bal/best", "pow/best");
   for (const auto& c : study.cases) {
     fmt::print("{:>7.4g} {:>6.3g} {:>10.5g} ", c.exponent, c.angle, c.exact);
-    for (const auto& m : c.methods) fmt::print(" {:>21}", fmt::format("{:.3e} ({:.3e})", m.variance, m.predicted_variance));
+    for (const auto& m : c.methods)
+      fmt::print(" {:>21}", fmt::format("{:.3e} ({:.3e})", m.variance, m.predicted_variance));
     fmt::print(" {:>9.3g} {:>9.3g}\n", c.balance_over_best, c.power_over_best);
   }
 }
@@ -74,10 +85,15 @@ void add_study_mis_command(CLI::App& study) {
   auto o = std::make_shared<MisOptions>();
   auto* command = study.add_subcommand(
       "mis", "Multiple importance sampling: light vs BSDF sampling vs the balance and power heuristics (Veach 1997)");
-  command->add_option("--exponents", o->exponents, "Phong exponents e (sharper lobes: larger)")->delimiter(',')->capture_default_str();
-  command->add_option("--angles", o->angles, "light half-angles in degrees, in (0, 90]")->delimiter(',')->capture_default_str();
+  command->add_option("--exponents", o->exponents, "Phong exponents e (sharper lobes: larger)")
+      ->delimiter(',')
+      ->capture_default_str();
+  command->add_option("--angles", o->angles, "light half-angles in degrees, in (0, 90]")
+      ->delimiter(',')
+      ->capture_default_str();
   command->add_option("--runs", o->runs, "independent replicates per method")->capture_default_str();
-  command->add_option("--samples", o->samples, "samples per replicate (even: MIS takes half from each strategy)")->capture_default_str();
+  command->add_option("--samples", o->samples, "samples per replicate (even: MIS takes half from each strategy)")
+      ->capture_default_str();
   command->add_option("--beta", o->beta, "the power heuristic's exponent")->capture_default_str();
   add_seed_option(*command, o->seed, "seed of the random numbers");
   add_threads_option(*command, o->threads, "threads (results do not depend on it)");

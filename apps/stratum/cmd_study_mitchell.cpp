@@ -33,19 +33,27 @@ nlohmann::json to_json(const analysis::MitchellStudy& study) {
     nlohmann::json cells = nlohmann::json::array();
     for (std::size_t requested : study.options.counts) {
       const auto& cell = study.cell(analysis::mitchell_pattern_id(pattern), requested);
-      cells.push_back({{"requested", cell.requested}, {"n", cell.n}, {"rms", cell.rms.mean}, {"rms_se", cell.rms.error},
-                       {"mean", cell.mean.mean}, {"mean_se", cell.mean.error}, {"max", cell.max.mean},
+      cells.push_back({{"requested", cell.requested},
+                       {"n", cell.n},
+                       {"rms", cell.rms.mean},
+                       {"rms_se", cell.rms.error},
+                       {"mean", cell.mean.mean},
+                       {"mean_se", cell.mean.error},
+                       {"max", cell.max.mean},
                        {"max_se", cell.max.error}});
     }
     const auto& spectrum = study.spectra[p];
-    patterns.push_back({{"label", pattern.label}, {"sampler", pattern.sampler}, {"params", pattern.params},
+    patterns.push_back({{"label", pattern.label},
+                        {"sampler", pattern.sampler},
+                        {"params", pattern.params},
                         {"cells", cells},
                         {"spectrum", {{"n", spectrum.n}, {"frequency", spectrum.frequency}, {"power", spectrum.power}}},
                         {"example", spectrum.example}});
   }
-  return {{"study", "mitchell"}, {"measure", "edge-random"}, {"lines", study.options.lines},
-          {"realizations", study.options.realizations}, {"seed", study.options.seed}, {"counts", study.options.counts},
-          {"patterns", patterns}, {"notes", study.notes}};
+  return {{"study", "mitchell"},          {"measure", "edge-random"},
+          {"lines", study.options.lines}, {"realizations", study.options.realizations},
+          {"seed", study.options.seed},   {"counts", study.options.counts},
+          {"patterns", patterns},         {"notes", study.notes}};
 }
 
 void run_mitchell(const MitchellOptions& options) {
@@ -78,15 +86,20 @@ void run_mitchell(const MitchellOptions& options) {
 void add_study_mitchell_command(CLI::App& study) {
   auto options = std::make_shared<MitchellOptions>();
   auto* command = study.add_subcommand(
-      "mitchell", "Random-edge discrepancy of Zaremba, jittered, Poisson-disk, N-rooks and random patterns (Mitchell 1992)");
-  command->add_option("--counts", options->counts, "point counts, comma-separated")->delimiter(',')->capture_default_str();
-  command->add_option("--realizations", options->realizations, "realizations K per pattern and count")->capture_default_str();
+      "mitchell",
+      "Random-edge discrepancy of Zaremba, jittered, Poisson-disk, N-rooks and random patterns (Mitchell 1992)");
+  command->add_option("--counts", options->counts, "point counts, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  command->add_option("--realizations", options->realizations, "realizations K per pattern and count")
+      ->capture_default_str();
   command->add_option("--lines", options->lines, "random lines L per realization")->capture_default_str();
   add_seed_option(*command, options->seed, "seed of patterns and lines");
   add_threads_option(*command, options->threads, "threads");
-  command->add_option("--sampler", options->extras,
-                      "an extra registry pattern, a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md), compared "
-                      "after Mitchell's five; repeatable");
+  command->add_option(
+      "--sampler", options->extras,
+      "an extra registry pattern, a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md), compared "
+      "after Mitchell's five; repeatable");
   add_spec_footer(*command);
   command->add_flag("--json", options->json, "print the table as JSON");
   command->add_option("--plot", options->plot, "write a figure (PNG): each pattern, its radial spectrum, the table");

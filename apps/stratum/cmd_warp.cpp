@@ -68,8 +68,8 @@ void run_on_points(const Warp& warp, const WarpOptions& options, TableOutput& ta
   const PointSet points = io::read_points_strict(invert ? options.invert : options.pdf_at);
   const std::size_t out_dim = warp.output_dim();
   if (points.d != out_dim)
-    throw invalid_argument(invert ? "invert" : "pdf-at", (invert ? options.invert : options.pdf_at) + " (" +
-                                                              std::to_string(points.d) + " columns)",
+    throw invalid_argument(invert ? "invert" : "pdf-at",
+                           (invert ? options.invert : options.pdf_at) + " (" + std::to_string(points.d) + " columns)",
                            options.map + " maps to " + std::to_string(out_dim) + "-D points: give " +
                                std::to_string(out_dim) + " columns");
   if (invert) {
@@ -99,7 +99,8 @@ void run_warp(const WarpOptions& options) {
   if (!options.pdf_at.empty() && !options.invert.empty())
     throw invalid_argument("invert", options.invert, "give --pdf-at FILE or --invert FILE, not both");
   if (from_file && options.n != 0)
-    throw invalid_argument("n", std::to_string(options.n), "--pdf-at/--invert read their points from the FILE; drop -n");
+    throw invalid_argument("n", std::to_string(options.n),
+                           "--pdf-at/--invert read their points from the FILE; drop -n");
   if (!from_file) require(options.n >= 1, "n", options.n, "must be a positive integer");
   std::map<std::string, std::string> texts = parse_key_values("warp-param", options.warp_params);
   for (auto& [key, text] : texts) text = warp_param_text(key, text);
@@ -133,14 +134,14 @@ void add_warp_command(CLI::App& app) {
   add_sampler_options(*command, options->sampler, "sampler of the uniform input (2D for 2D warps)",
                       "seed of the sampler")
       ->capture_default_str();
-  command->add_option("--warp-param", options->warp_params,
-                      "warp parameter KEY=V1,V2,... or KEY=@FILE (repeatable)");
+  command->add_option("--warp-param", options->warp_params, "warp parameter KEY=V1,V2,... or KEY=@FILE (repeatable)");
   command->add_option("--format", options->format, "txt|csv|npy (default: by the -o extension, else txt)");
   command->add_option("-o,--output", options->output, "output file (stdout when absent)");
   command->add_option("--pdf-at", options->pdf_at,
                       "FILE of points in the map's domain: write each point and its pdf (instead of -s/-n)");
-  command->add_option("--invert", options->invert,
-                      "FILE of points in the map's domain: write each point's preimage u in [0,1)^d (instead of -s/-n)");
+  command->add_option(
+      "--invert", options->invert,
+      "FILE of points in the map's domain: write each point's preimage u in [0,1)^d (instead of -s/-n)");
   command->add_flag("--list", options->list, "list the warps with their domains and parameters");
   command->callback([options] { run_warp(*options); });
 }

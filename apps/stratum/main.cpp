@@ -75,8 +75,9 @@ int main(int argc, char** argv) {
   } catch (const stratum::memory_error& e) {
     code = 3, message = e.what();  // refused before allocating (stratum/memory.hpp)
   } catch (const std::bad_alloc&) {
-    code = 3, message = "out of memory: the system refused an allocation this command needs (ask for fewer points, "
-                        "a smaller image or fewer threads; STRATUM_MEMORY_LIMIT sets the guard, docs/cli.md)";
+    code = 3, message =
+                  "out of memory: the system refused an allocation this command needs (ask for fewer points, "
+                  "a smaller image or fewer threads; STRATUM_MEMORY_LIMIT sets the guard, docs/cli.md)";
   } catch (const std::exception& e) {
     code = 1, message = e.what();
   }

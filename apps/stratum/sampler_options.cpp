@@ -40,7 +40,8 @@ CLI::Option* add_sampler_options(CLI::App& command, SamplerOptions& options, con
                                  const std::string& seed_help) {
   auto* sampler = command.add_option("-s,--sampler", options.sampler,
                                      sampler_help + ": a spec NAME[(KEY=VALUE,...)][:RANDOMIZER] (docs/samplers.md)");
-  command.add_option("-p,--param", options.params, "sampler parameter KEY=VALUE (repeatable; `stratum samplers --json` lists them)");
+  command.add_option("-p,--param", options.params,
+                     "sampler parameter KEY=VALUE (repeatable; `stratum samplers --json` lists them)");
   command.add_option("--randomize", options.randomize,
                      "the sampler's randomizer, as the :RANDOMIZER of the spec (default: the sampler's own)");
   add_seed_option(command, options.seed, seed_help);
@@ -64,7 +65,9 @@ CLI::Option* add_threads_option(CLI::App& command, std::int64_t& threads, const 
   return command
       .add_option_function<std::string>(
           "--threads",
-          [&threads](const std::string& text) { threads = static_cast<std::int64_t>(resolve_threads(parse_threads(text))); },
+          [&threads](const std::string& text) {
+            threads = static_cast<std::int64_t>(resolve_threads(parse_threads(text)));
+          },
           help + " (0: every core)")
       ->type_name("INT")
       ->default_str("0");
@@ -144,7 +147,8 @@ void check_subcommand_names(const CLI::App& app, int argc, const char* const* ar
     const CLI::App* next = nullptr;
     for (const CLI::App* command : at->get_subcommands([](const CLI::App*) { return true; }))
       if (command->check_name(word)) next = command;
-    if (!next) throw usage_error("unknown subcommand '" + printable(word) + "'" + of() + ": valid subcommands are " + names);
+    if (!next)
+      throw usage_error("unknown subcommand '" + printable(word) + "'" + of() + ": valid subcommands are " + names);
     at = next;
   }
   // Every word was a subcommand name and the last one needs a subcommand of

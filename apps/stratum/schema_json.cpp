@@ -8,7 +8,9 @@
 
 namespace stratum::cli {
 
-static nlohmann::json bound(double value) { return std::isinf(value) ? nlohmann::json(nullptr) : nlohmann::json(value); }
+static nlohmann::json bound(double value) {
+  return std::isinf(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
+}
 
 /// A default as the JSON value it reads as (30, false, [0.5], "gray"), the
 /// same as Python's describe gives it.
@@ -57,7 +59,8 @@ static std::string accepts(const Param& param) {
   std::string text = std::string(type_name(param.type));
   const std::string range = range_text(param.range);
   const bool list = param.type == ParamType::integers || param.type == ParamType::reals;
-  if ((list || param.type == ParamType::integer || param.type == ParamType::real) && !range.empty()) text += " in " + range;
+  if ((list || param.type == ParamType::integer || param.type == ParamType::real) && !range.empty())
+    text += " in " + range;
   if (param.type == ParamType::choice) {
     std::string choices;
     for (const auto& c : param.choices) choices += (choices.empty() ? "" : ", ") + c;
@@ -82,10 +85,11 @@ std::string parameters_markdown(const std::vector<analysis::CatalogueEntry>& ent
       "their spec or with `-p KEY=VALUE` (docs/samplers.md), measures with `--measure-param`, warps with "
       "`--warp-param`, integrands with `--integrand-param`; Python takes them as keyword arguments or a `params` "
       "dict. `stratum describe NAME` (or `stratum.describe(NAME)` in Python) shows one entry.\n";
-  const char* kinds[][2] = {{"sampler", "Samplers"}, {"measure", "Measures"}, {"warp", "Warps"}, {"integrand", "Integrands"}};
+  const char* kinds[][2] = {
+      {"sampler", "Samplers"}, {"measure", "Measures"}, {"warp", "Warps"}, {"integrand", "Integrands"}};
   for (const auto& [kind, title] : kinds) {
-    text += fmt::format("\n## {}\n\n| {} | parameter | accepts | default | description |\n|---|---|---|---|---|\n", title,
-                        kind);
+    text += fmt::format("\n## {}\n\n| {} | parameter | accepts | default | description |\n|---|---|---|---|---|\n",
+                        title, kind);
     for (const auto& entry : entries) {
       if (entry.kind != kind || entry.params->empty()) continue;
       for (const auto& param : *entry.params)

@@ -25,9 +25,9 @@ struct SamplerRequest {
   std::optional<std::uint64_t> n;  ///< absent only where a sampler can choose (maximal Poisson disk)
   unsigned d = 2;
   std::uint64_t seed = 0;
-  std::uint64_t start = 0;         ///< index of the first point (sequences only; scipy's fast_forward)
-  std::string randomize;           ///< empty: the sampler's default
-  std::optional<double> radius;    ///< Poisson disk and friends
+  std::uint64_t start = 0;       ///< index of the first point (sequences only; scipy's fast_forward)
+  std::string randomize;         ///< empty: the sampler's default
+  std::optional<double> radius;  ///< Poisson disk and friends
   unsigned threads = 1;
   std::map<std::string, std::string> params;  ///< as text ("periodic=1"): every face passes it through unchanged
   /// `params` bound to the sampler's schema (parsed, checked, defaults
@@ -55,7 +55,7 @@ struct SamplerInfo {
   std::vector<std::string> randomizers;  ///< accepted values of --randomize; front() is the default
   std::string counts;                    ///< which n the sampler takes, in words
   bool n_optional = false;               ///< may n be left out (then `radius` decides)?
-  std::vector<Param> params;  ///< the schema of `SamplerRequest::params`
+  std::vector<Param> params;             ///< the schema of `SamplerRequest::params`
   /// Checks the sampler-specific part of a request (n it can take, params);
   /// throws stratum::invalid_argument.
   std::function<void(const SamplerRequest&)> validate;

@@ -40,10 +40,10 @@ class Warp {
 struct WarpInfo {
   std::string name;
   std::string description;
-  std::string domain;   ///< "disk", "hemisphere", "sphere", "interval", ...
-  std::string measure;  ///< what the pdf is per: "area", "solid angle", "length"
+  std::string domain;            ///< "disk", "hemisphere", "sphere", "interval", ...
+  std::string measure;           ///< what the pdf is per: "area", "solid angle", "length"
   bool area_preserving = false;  ///< constant Jacobian: strata map to equal-measure cells
-  std::vector<Param> params;  ///< numbers: integer, real, integers or reals
+  std::vector<Param> params;     ///< numbers: integer, real, integers or reals
   /// Validates `params` (defaults already filled in) and builds the warp;
   /// throws stratum::invalid_argument naming the parameter.
   std::function<std::unique_ptr<const Warp>(const WarpParams&)> make;

@@ -10,16 +10,14 @@ namespace stratum::python {
 namespace {
 
 std::mutex scopes_mutex;
-int scopes = 0;                      // live InterruptScopes
-bool chained = false;                // our handler is installed
+int scopes = 0;                     // live InterruptScopes
+bool chained = false;               // our handler is installed
 struct sigaction python_action {};  // the handler it hands the signal on to
 
 extern "C" void stop_and_chain(int signal, siginfo_t* info, void* context) {
   request_interrupt();
-  if (python_action.sa_flags & SA_SIGINFO)
-    python_action.sa_sigaction(signal, info, context);
-  else if (python_action.sa_handler != SIG_DFL && python_action.sa_handler != SIG_IGN)
-    python_action.sa_handler(signal);
+  if (python_action.sa_flags & SA_SIGINFO) python_action.sa_sigaction(signal, info, context);
+  else if (python_action.sa_handler != SIG_DFL && python_action.sa_handler != SIG_IGN) python_action.sa_handler(signal);
 }
 
 }  // namespace
@@ -30,8 +28,8 @@ InterruptScope::InterruptScope() {
   clear_interrupt();  // a request from before this call is not for it
   struct sigaction current {};
   if (::sigaction(SIGINT, nullptr, &current) != 0) return;
-  const bool function = (current.sa_flags & SA_SIGINFO) ||
-                        (current.sa_handler != SIG_DFL && current.sa_handler != SIG_IGN);
+  const bool function =
+      (current.sa_flags & SA_SIGINFO) || (current.sa_handler != SIG_DFL && current.sa_handler != SIG_IGN);
   if (!function) return;  // ignored, or the default (the process ends): as the user set it
   python_action = current;
   struct sigaction action {};

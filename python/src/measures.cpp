@@ -27,8 +27,8 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 namespace sa = stratum::analysis;
 
 sa::PointView view_of(const Array& x) {
-  if (x.ndim() != 2) throw invalid_argument("x", "an array of " + std::to_string(x.ndim()) + " dimensions",
-                                            "must have shape (n, d)");
+  if (x.ndim() != 2)
+    throw invalid_argument("x", "an array of " + std::to_string(x.ndim()) + " dimensions", "must have shape (n, d)");
   return {x.data(), static_cast<std::size_t>(x.shape(0)), static_cast<std::size_t>(x.shape(1))};
 }
 

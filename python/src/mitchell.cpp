@@ -45,12 +45,12 @@ py::dict study_mitchell(const std::vector<std::size_t>& counts, std::size_t real
                             py::arg("max") = mean_and_error(cell.max), py::arg("rms_values") = cell.rms_values));
     }
     const auto& spectrum = study.spectra[p];
-    patterns.append(py::dict(py::arg("label") = pattern.label, py::arg("sampler") = pattern.sampler,
-                             py::arg("params") = pattern.params, py::arg("cells") = cells,
-                             py::arg("spectrum") = py::dict(py::arg("n") = spectrum.n,
-                                                            py::arg("frequency") = spectrum.frequency,
-                                                            py::arg("power") = spectrum.power),
-                             py::arg("example") = spectrum.example));
+    patterns.append(
+        py::dict(py::arg("label") = pattern.label, py::arg("sampler") = pattern.sampler,
+                 py::arg("params") = pattern.params, py::arg("cells") = cells,
+                 py::arg("spectrum") = py::dict(py::arg("n") = spectrum.n, py::arg("frequency") = spectrum.frequency,
+                                                py::arg("power") = spectrum.power),
+                 py::arg("example") = spectrum.example));
   }
   return py::dict(py::arg("study") = "mitchell", py::arg("measure") = "edge-random", py::arg("lines") = lines,
                   py::arg("realizations") = realizations, py::arg("seed") = seed, py::arg("counts") = counts,
@@ -61,8 +61,9 @@ py::dict study_mitchell(const std::vector<std::size_t>& counts, std::size_t real
 }  // namespace
 
 void bind_mitchell(py::module_& m) {
-  m.def("study_mitchell", &study_mitchell, py::arg("counts"), py::arg("realizations"), py::arg("lines"), py::arg("seed"),
-        py::arg("threads"), py::arg("extras"), "Mitchell's comparison of patterns by random-edge discrepancy");
+  m.def("study_mitchell", &study_mitchell, py::arg("counts"), py::arg("realizations"), py::arg("lines"),
+        py::arg("seed"), py::arg("threads"), py::arg("extras"),
+        "Mitchell's comparison of patterns by random-edge discrepancy");
 }
 
 }  // namespace stratum::python

@@ -25,11 +25,10 @@ py::list sampler_list() {
   py::list list;
   for (const auto& s : stratum::samplers()) {
     const py::list params = stratum::python::params_list(s.params);
-    list.append(py::dict(py::arg("name") = s.name, py::arg("kind") = s.kind,
-                         py::arg("description") = s.description, py::arg("min_dim") = s.min_dim,
-                         py::arg("max_dim") = s.max_dim, py::arg("properties") = s.properties,
-                         py::arg("randomizers") = s.randomizers, py::arg("counts") = s.counts,
-                         py::arg("params") = params));
+    list.append(py::dict(py::arg("name") = s.name, py::arg("kind") = s.kind, py::arg("description") = s.description,
+                         py::arg("min_dim") = s.min_dim, py::arg("max_dim") = s.max_dim,
+                         py::arg("properties") = s.properties, py::arg("randomizers") = s.randomizers,
+                         py::arg("counts") = s.counts, py::arg("params") = params));
   }
   return list;
 }
@@ -68,9 +67,10 @@ PYBIND11_MODULE(_stratum, m) {
   py::register_exception<stratum::memory_error>(m, "MemoryLimitError", PyExc_MemoryError);
   stratum::python::register_interrupted(m);  // Ctrl-C in a long call: KeyboardInterrupt
   m.def("samplers", &sampler_list, "Every registry sampler as a dict");
-  m.def("randomizers", [] { return stratum::randomizers(); }, "Every randomizer (name, description)");
-  m.def("points", &points, py::arg("sampler"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("start"), py::arg("randomize"),
-        py::arg("radius"), py::arg("threads"), py::arg("params"));
+  m.def(
+      "randomizers", [] { return stratum::randomizers(); }, "Every randomizer (name, description)");
+  m.def("points", &points, py::arg("sampler"), py::arg("n"), py::arg("d"), py::arg("seed"), py::arg("start"),
+        py::arg("randomize"), py::arg("radius"), py::arg("threads"), py::arg("params"));
   m.def("max_coordinates", &stratum::max_coordinates);
   m.def(
       "parse_spec",

@@ -44,7 +44,8 @@ py::tuple render_image(const std::string& scene_path, int width, int height, con
   bool cached = false;
   {
     InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
-    image = reference_spp > 0 ? render::reference_image(scene, render::scene_fingerprint(scene), settings, reference_spp, cache, &cached)
+    image = reference_spp > 0 ? render::reference_image(scene, render::scene_fingerprint(scene), settings,
+                                                        reference_spp, cache, &cached)
                               : render::render(scene, settings, {}, &interrupt_flag());
   }
   if (image.stopped) throw interrupted();  // Ctrl-C: KeyboardInterrupt, no partial image
@@ -78,10 +79,10 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
                  py::arg("efficiency") = r.efficiency, py::arg("mse_ratio") = r.mse_ratio,
                  py::arg("efficiency_ratio") = r.efficiency_ratio);
     if (!r.variance_path.empty()) row["variance"] = r.variance_path;
-    row["scene_note"] = prepared.note;  // what the comparison's scene leaves out ("" when nothing)
+    row["scene_note"] = prepared.note;                   // what the comparison's scene leaves out ("" when nothing)
     row["low_frequency_power"] = r.low_frequency_power;  // NaN where the error has no spectrum
-    row["error_spectrum"] = py::dict(py::arg("frequency") = r.error_radial_frequency,
-                                     py::arg("power") = r.error_radial_power);
+    row["error_spectrum"] =
+        py::dict(py::arg("frequency") = r.error_radial_frequency, py::arg("power") = r.error_radial_power);
     if (repeats > 1) {  // the statistics over the repeats, as `stratum compare --repeats --json`
       const render::RepeatedStatistics& st = repeated.statistics[c];
       std::vector<double> mse, seconds;

@@ -43,8 +43,8 @@ void bind_report(py::module_& m) {
           numbers[py::str(section.id)] = py::module_::import("json").attr("loads")(section.numbers.dump());
         return py::make_tuple(result.index, numbers, result.seconds);
       },
-      py::arg("directory"), py::arg("quick"), py::arg("samplers"), py::arg("only"), py::arg("threads"),
-      py::arg("seed"), py::arg("cache"), py::arg("verbose"));
+      py::arg("directory"), py::arg("quick"), py::arg("samplers"), py::arg("only"), py::arg("threads"), py::arg("seed"),
+      py::arg("cache"), py::arg("verbose"));
 }
 
 }  // namespace stratum::python

@@ -27,7 +27,8 @@ py::dict param_dict(const Param& param) {
   out["name"] = param.name;
   out["type"] = std::string(type_name(param.type));
   out["description"] = param.description;
-  out["default"] = param.default_value.empty() ? py::object(py::none()) : python_value(parse_param(param, param.default_value));
+  out["default"] =
+      param.default_value.empty() ? py::object(py::none()) : python_value(parse_param(param, param.default_value));
   const bool list = param.type == ParamType::integers || param.type == ParamType::reals;
   const bool numeric = list || param.type == ParamType::integer || param.type == ParamType::real;
   if (numeric) {
@@ -46,8 +47,9 @@ py::dict param_dict(const Param& param) {
   if (list) {
     py::dict length;
     length["min"] = param.length.min;
-    length["max"] = param.length.max == std::numeric_limits<std::size_t>::max() ? py::object(py::none())
-                                                                               : py::object(py::int_(param.length.max));
+    length["max"] = param.length.max == std::numeric_limits<std::size_t>::max()
+                        ? py::object(py::none())
+                        : py::object(py::int_(param.length.max));
     out["length"] = length;
     out["separator"] = std::string(1, param.separator);
   }

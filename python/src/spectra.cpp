@@ -38,10 +38,10 @@ py::dict image_spectrum(const Array& values) {
   }
   py::array_t<double> power({s.height, s.width});
   std::copy(s.power.begin(), s.power.end(), power.mutable_data());
-  return py::dict(py::arg("power") = power, py::arg("low_frequency_power") = s.low_frequency_power,
-                  py::arg("variance") = s.variance,
-                  py::arg("radial") = py::dict(py::arg("frequency") = s.radial_frequency,
-                                               py::arg("power") = s.radial_power));
+  return py::dict(
+      py::arg("power") = power, py::arg("low_frequency_power") = s.low_frequency_power,
+      py::arg("variance") = s.variance,
+      py::arg("radial") = py::dict(py::arg("frequency") = s.radial_frequency, py::arg("power") = s.radial_power));
 }
 
 /// analysis/blue_noise.hpp: the key file's bytes and the per-pair energies.
@@ -58,8 +58,8 @@ py::tuple optimize_blue_noise(std::uint32_t size, std::uint32_t dims, std::uint6
   py::list pairs;
   for (const auto& r : report)
     pairs.append(py::dict(py::arg("initial_energy") = r.initial_energy / r.white_energy,
-                          py::arg("final_energy") = r.final_energy / r.white_energy,
-                          py::arg("accepted") = r.accepted, py::arg("proposed") = r.proposed));
+                          py::arg("final_energy") = r.final_energy / r.white_energy, py::arg("accepted") = r.accepted,
+                          py::arg("proposed") = r.proposed));
   return py::make_tuple(py::bytes(bytes), pairs);
 }
 

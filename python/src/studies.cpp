@@ -75,24 +75,23 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
       r = sa::integrate(request);
     }
   }
-  py::dict out(py::arg("integrand") = r.integrand, py::arg("sampler") = r.sampler,
-                  py::arg("randomize") = r.randomize, py::arg("d") = r.d, py::arg("n") = r.n, py::arg("runs") = r.runs,
-                  py::arg("estimate") = r.estimate, py::arg("standard_error") = r.standard_error,
-                  py::arg("standard_error_kind") = r.standard_error_kind, py::arg("exact") = r.exact,
-                  py::arg("error") = r.error, py::arg("seconds") = r.seconds,
-                  py::arg("run_estimates") = to_array(r.run_estimates), py::arg("confidence") = r.confidence,
-                  py::arg("interval") = py::make_tuple(r.interval_low, r.interval_high),
-                  py::arg("half_width") = r.half_width, py::arg("seconds_per_run") = r.seconds_per_run,
-                  py::arg("efficiency") = r.efficiency);
+  py::dict out(py::arg("integrand") = r.integrand, py::arg("sampler") = r.sampler, py::arg("randomize") = r.randomize,
+               py::arg("d") = r.d, py::arg("n") = r.n, py::arg("runs") = r.runs, py::arg("estimate") = r.estimate,
+               py::arg("standard_error") = r.standard_error, py::arg("standard_error_kind") = r.standard_error_kind,
+               py::arg("exact") = r.exact, py::arg("error") = r.error, py::arg("seconds") = r.seconds,
+               py::arg("run_estimates") = to_array(r.run_estimates), py::arg("confidence") = r.confidence,
+               py::arg("interval") = py::make_tuple(r.interval_low, r.interval_high),
+               py::arg("half_width") = r.half_width, py::arg("seconds_per_run") = r.seconds_per_run,
+               py::arg("efficiency") = r.efficiency);
   if (to_tolerance) {
     py::list steps;
     for (const auto& step : tolerance.steps)
       steps.append(py::dict(py::arg("n") = step.n, py::arg("estimate") = step.estimate,
                             py::arg("half_width") = step.half_width, py::arg("target") = step.target,
                             py::arg("seconds") = step.seconds));
-    out["tolerance"] = py::dict(py::arg("abs_tol") = abs_tol.value_or(0), py::arg("rel_tol") = rel_tol.value_or(0),
-                                py::arg("target") = tolerance.target, py::arg("met") = tolerance.met,
-                                py::arg("steps") = steps);
+    out["tolerance"] =
+        py::dict(py::arg("abs_tol") = abs_tol.value_or(0), py::arg("rel_tol") = rel_tol.value_or(0),
+                 py::arg("target") = tolerance.target, py::arg("met") = tolerance.met, py::arg("steps") = steps);
   }
   return out;
 }
@@ -119,7 +118,8 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
     std::vector<double> mean_error, rmse, variance, seconds, efficiency;
     std::vector<std::uint64_t> sampler_counts;
     py::list skipped;
-    for (const auto& skip : entry.skipped) skipped.append(py::dict(py::arg("n") = skip.n, py::arg("reason") = skip.reason));
+    for (const auto& skip : entry.skipped)
+      skipped.append(py::dict(py::arg("n") = skip.n, py::arg("reason") = skip.reason));
     for (const auto& row : entry.rows) {
       sampler_counts.push_back(row.n);
       mean_error.push_back(row.mean_error);
@@ -130,7 +130,8 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
     }
     per_sampler[py::str(entry.sampler.name + ":" + entry.sampler.randomize)] = py::dict(
         py::arg("name") = entry.sampler.name, py::arg("randomize") = entry.sampler.randomize,
-        py::arg("n") = py::array_t<std::uint64_t>(static_cast<py::ssize_t>(sampler_counts.size()), sampler_counts.data()),
+        py::arg("n") =
+            py::array_t<std::uint64_t>(static_cast<py::ssize_t>(sampler_counts.size()), sampler_counts.data()),
         py::arg("skipped") = skipped, py::arg("mean_error") = to_array(mean_error), py::arg("rmse") = to_array(rmse),
         py::arg("variance") = to_array(variance), py::arg("seconds") = to_array(seconds),
         py::arg("efficiency") = to_array(efficiency), py::arg("fitted") = entry.fitted,
@@ -149,8 +150,8 @@ py::dict converge(const std::string& integrand, unsigned d, const sa::IntegrandP
 void bind_integrate_converge(py::module_& m) {
   m.def("integrands", &integrand_list, "Every test integrand as a dict");
   m.def("integrate", &integrate, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("sampler"),
-        py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"),
-        py::arg("confidence"), py::arg("abs_tol"), py::arg("rel_tol"), py::arg("max_n"));
+        py::arg("randomize"), py::arg("n"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("confidence"),
+        py::arg("abs_tol"), py::arg("rel_tol"), py::arg("max_n"));
   m.def("converge", &converge, py::arg("integrand"), py::arg("d"), py::arg("params"), py::arg("samplers"),
         py::arg("counts"), py::arg("runs"), py::arg("seed"), py::arg("threads"), py::arg("skip_refused_counts"),
         py::arg("confidence"));
@@ -294,9 +295,8 @@ py::dict study_mis(const std::vector<double>& exponents, const std::vector<doubl
 void bind_dimension_importance(py::module_& m) {
   m.def("study_mis", &study_mis, py::arg("exponents"), py::arg("angles"), py::arg("runs"), py::arg("samples"),
         py::arg("beta"), py::arg("seed"), py::arg("threads"));
-  m.def("study_dimension", &study_dimension, py::arg("min_dim"), py::arg("max_dim"), py::arg("min_n"),
-        py::arg("max_n"), py::arg("runs"), py::arg("rule"), py::arg("integrand"), py::arg("sobol"), py::arg("seed"),
-        py::arg("threads"));
+  m.def("study_dimension", &study_dimension, py::arg("min_dim"), py::arg("max_dim"), py::arg("min_n"), py::arg("max_n"),
+        py::arg("runs"), py::arg("rule"), py::arg("integrand"), py::arg("sobol"), py::arg("seed"), py::arg("threads"));
   m.def("study_importance", &study_importance, py::arg("runs"), py::arg("samples"), py::arg("sizes"),
         py::arg("distances"), py::arg("radiance"), py::arg("seed"), py::arg("threads"));
   m.def("rectangle_irradiance", [](const std::array<double, 3>& corner, const std::array<double, 3>& edge_u,
@@ -306,9 +306,8 @@ void bind_dimension_importance(py::module_& m) {
 }
 }  // namespace
 
-
 void bind_studies(py::module_& m) {
-  bind_integrate_converge(m);  // section "estimators"
+  bind_integrate_converge(m);    // section "estimators"
   bind_dimension_importance(m);  // section "studies"
 }
 

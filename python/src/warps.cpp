@@ -25,9 +25,9 @@ py::list warp_list() {
   py::list list;
   for (const auto& w : warps()) {
     const py::list params = params_list(w.params);
-    list.append(py::dict(py::arg("name") = w.name, py::arg("description") = w.description,
-                         py::arg("domain") = w.domain, py::arg("measure") = w.measure,
-                         py::arg("area_preserving") = w.area_preserving, py::arg("params") = params));
+    list.append(py::dict(py::arg("name") = w.name, py::arg("description") = w.description, py::arg("domain") = w.domain,
+                         py::arg("measure") = w.measure, py::arg("area_preserving") = w.area_preserving,
+                         py::arg("params") = params));
   }
   return list;
 }
@@ -48,7 +48,8 @@ std::size_t rows_of(const Array& x, unsigned dim, const char* what, const std::s
 
 /// The result as (n, dim), or (n,) when the input was one-dimensional and dim is 1.
 Array to_array(std::vector<double> values, std::size_t n, unsigned dim, bool flat) {
-  Array out = flat ? Array(static_cast<py::ssize_t>(n)) : Array({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(dim)});
+  Array out =
+      flat ? Array(static_cast<py::ssize_t>(n)) : Array({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(dim)});
   std::copy(values.begin(), values.end(), out.mutable_data());
   return out;
 }

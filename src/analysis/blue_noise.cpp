@@ -18,10 +18,10 @@
 namespace stratum::analysis {
 namespace {
 
-constexpr std::uint64_t tag_ranks = 0x626e'7261'6e6bULL;      // "bnrank"
-constexpr std::uint64_t tag_integrand = 0x626e'696e'74ULL;    // "bnint"
-constexpr std::uint64_t tag_proposal = 0x626e'7072'6f70ULL;   // "bnprop"
-constexpr int radius = 4;  // of K = G ⊛ G
+constexpr std::uint64_t tag_ranks = 0x626e'7261'6e6bULL;     // "bnrank"
+constexpr std::uint64_t tag_integrand = 0x626e'696e'74ULL;   // "bnint"
+constexpr std::uint64_t tag_proposal = 0x626e'7072'6f70ULL;  // "bnprop"
+constexpr int radius = 4;                                    // of K = G ⊛ G
 /// τ0 as a fraction of the mean |ΔE| of the first proposals (0.1 ended
 /// lower than greedy descent, 0 and larger fractions higher, on 64 × 64).
 constexpr double threshold_fraction = 0.1;
@@ -53,10 +53,15 @@ struct Heaviside {
 
 Heaviside make_heaviside(std::uint64_t seed, std::uint32_t pair, std::uint32_t level, std::uint32_t t) {
   const std::uint64_t key = hash64(seed, tag_integrand, pair, level, t);
-  Heaviside h{bits_to_double(hash64(key, 0)), bits_to_double(hash64(key, 1)), 0, 0,
-              HashOwenScrambler::Dimension(hash64(key, 2)), HashOwenScrambler::Dimension(hash64(key, 3))};
+  Heaviside h{bits_to_double(hash64(key, 0)),
+              bits_to_double(hash64(key, 1)),
+              0,
+              0,
+              HashOwenScrambler::Dimension(hash64(key, 2)),
+              HashOwenScrambler::Dimension(hash64(key, 3))};
   for (std::uint64_t attempt = 0;; ++attempt) {
-    const double x = 2 * bits_to_double(hash64(key, 4, attempt)) - 1, y = 2 * bits_to_double(hash64(key, 5, attempt)) - 1;
+    const double x = 2 * bits_to_double(hash64(key, 4, attempt)) - 1,
+                 y = 2 * bits_to_double(hash64(key, 5, attempt)) - 1;
     const double r2 = x * x + y * y;
     if (r2 > 1e-6 && r2 <= 1) {
       h.nx = x, h.ny = y;
@@ -202,12 +207,13 @@ void check_blue_noise_options(const BlueNoiseOptions& o) {
 }
 
 BlueNoiseTable optimize_blue_noise(const BlueNoiseOptions& o, std::vector<BlueNoisePairReport>* report,
-                                  const std::function<void(std::uint32_t, std::uint32_t)>& progress) {
+                                   const std::function<void(std::uint32_t, std::uint32_t)>& progress) {
   check_blue_noise_options(o);
   const std::size_t n = std::size_t{o.size} * o.size;
   const unsigned levels = static_cast<unsigned>(std::countr_zero(o.max_spp)) + 1;
   require_memory(2 * n * levels * o.integrands * sizeof(double), "the optimizer's error images");
-  BlueNoiseTable table{o.size, o.dims, o.max_spp, o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * (o.dims / 2))};
+  BlueNoiseTable table{
+      o.size, o.dims, o.max_spp, o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * (o.dims / 2))};
   const std::uint32_t pairs = o.dims / 2;
   if (report) report->assign(pairs, {});
   for (std::uint32_t pair = 0; pair < pairs; ++pair) {

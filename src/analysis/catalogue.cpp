@@ -42,7 +42,8 @@ std::vector<CatalogueEntry> find_in_catalogue(std::string_view name, std::string
     std::string names;
     for (const auto& entry : candidates) names += (names.empty() ? "" : ", ") + entry.name;
     throw invalid_argument("name", name.empty() ? "''" : std::string(name),
-                           "no " + (kind.empty() ? std::string("sampler, measure, warp or integrand") : std::string(kind)) +
+                           "no " +
+                               (kind.empty() ? std::string("sampler, measure, warp or integrand") : std::string(kind)) +
                                " is called that; known: " + names);
   }
   return found;

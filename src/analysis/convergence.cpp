@@ -82,8 +82,8 @@ RunOutcome run_once(const Integrand& integrand, const SamplerChoice& choice, std
 /// holding n points of d coordinates and their n integrand values.
 void require_runs_memory(std::uint64_t concurrent, std::uint64_t n, unsigned d) {
   require_memory(double(concurrent) * double(n) * (double(d) + 1) * sizeof(double),
-                 std::to_string(concurrent) + (concurrent == 1 ? " run" : " runs at once") + " of " + std::to_string(n) +
-                     " x " + std::to_string(d) + " points and their integrand values");
+                 std::to_string(concurrent) + (concurrent == 1 ? " run" : " runs at once") + " of " +
+                     std::to_string(n) + " x " + std::to_string(d) + " points and their integrand values");
 }
 
 std::uint64_t parse_count(std::string_view item, std::string_view whole) {
@@ -109,9 +109,8 @@ std::vector<std::uint64_t> parse_counts(std::string_view text) {
     const std::size_t first = text.find(':');
     const std::size_t second = text.find(':', first + 1);
     const std::uint64_t low = parse_count(text.substr(0, first), text);
-    const std::uint64_t high =
-        parse_count(text.substr(first + 1, second == std::string_view::npos ? std::string_view::npos : second - first - 1),
-                    text);
+    const std::uint64_t high = parse_count(
+        text.substr(first + 1, second == std::string_view::npos ? std::string_view::npos : second - first - 1), text);
     const std::uint64_t factor = second == std::string_view::npos ? 2 : parse_count(text.substr(second + 1), text);
     require(low <= high, "n", text, "the range A:B needs A <= B");
     require(factor >= 2, "n", text, "the factor F of A:B:F must be at least 2");
@@ -127,7 +126,8 @@ std::vector<std::uint64_t> parse_counts(std::string_view text) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
-    counts.push_back(parse_count(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start), text));
+    counts.push_back(parse_count(
+        text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start), text));
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
@@ -195,7 +195,8 @@ SlopeInterval slope_interval(std::span<const double> x, std::span<const double> 
     weight[k] = (std::log(x[k]) - mean_x) / sxx;
   }
   auto log_variance = [&](double sum_of_squares, double count) {
-    require(sum_of_squares > 0, "estimates", "(no spread)", "every count needs runs that differ, also with one left out");
+    require(sum_of_squares > 0, "estimates", "(no spread)",
+            "every count needs runs that differ, also with one left out");
     return std::log(sum_of_squares / (count - 1));
   };
   SlopeInterval interval;
@@ -384,18 +385,19 @@ ConvergenceResult run_convergence(const ConvergenceRequest& request) {
   const distributed::Dealt mine = distributed::dealt(tasks);
   tbb::task_arena arena(static_cast<int>(request.threads));
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 1), [&](const tbb::blocked_range<std::size_t>& range) {
-      for (std::size_t j = range.begin(); j != range.end(); ++j) {
-        check_interrupt();
-        const std::size_t task = mine[j];
-        const Cell& cell = cells[task / request.runs];
-        const std::size_t r = task % request.runs;
-        const RunOutcome outcome = run_once(*integrand, result.samplers[cell.sampler].sampler, cell.n,
-                                            hash64(request.seed, cell.sampler, cell.n, r), 1, false);
-        slots[2 * task] = outcome.estimate;
-        slots[2 * task + 1] = outcome.seconds;
-      }
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t j = range.begin(); j != range.end(); ++j) {
+                          check_interrupt();
+                          const std::size_t task = mine[j];
+                          const Cell& cell = cells[task / request.runs];
+                          const std::size_t r = task % request.runs;
+                          const RunOutcome outcome = run_once(*integrand, result.samplers[cell.sampler].sampler, cell.n,
+                                                              hash64(request.seed, cell.sampler, cell.n, r), 1, false);
+                          slots[2 * task] = outcome.estimate;
+                          slots[2 * task + 1] = outcome.seconds;
+                        }
+                      });
   });
   distributed::gather_dealt(slots, tasks);
   const auto estimate_of = [&](std::size_t task) { return slots[2 * task]; };

@@ -139,27 +139,28 @@ double tensor_product_integral(const PointFunction& f, unsigned d, const Quadrat
   std::vector<double> block_sums(blocks);
   const distributed::Share mine = distributed::share(blocks);  // a distributed job's processes share the blocks
   in_arena(threads, [&] {
-    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(mine.begin, mine.end), [&](const tbb::blocked_range<std::uint64_t>& r) {
-      std::vector<unsigned> digit(d);
-      std::vector<double> x(d);
-      for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
-        check_interrupt();
-        const std::uint64_t first = b * block, last = std::min(n, first + block);
-        std::uint64_t rest = first;
-        for (unsigned j = 0; j < d; ++j, rest /= m) digit[j] = static_cast<unsigned>(rest % m);
-        CompensatedSum sum;
-        for (std::uint64_t i = first; i < last; ++i) {
-          double weight = 1;
-          for (unsigned j = 0; j < d; ++j) {
-            x[j] = rule.nodes[digit[j]];
-            weight *= rule.weights[digit[j]];
-          }
-          sum.add(weight * f(x.data(), d));
-          for (unsigned j = 0; j < d && ++digit[j] == m; ++j) digit[j] = 0;  // odometer
-        }
-        block_sums[b] = sum.value();
-      }
-    });
+    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(mine.begin, mine.end),
+                      [&](const tbb::blocked_range<std::uint64_t>& r) {
+                        std::vector<unsigned> digit(d);
+                        std::vector<double> x(d);
+                        for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
+                          check_interrupt();
+                          const std::uint64_t first = b * block, last = std::min(n, first + block);
+                          std::uint64_t rest = first;
+                          for (unsigned j = 0; j < d; ++j, rest /= m) digit[j] = static_cast<unsigned>(rest % m);
+                          CompensatedSum sum;
+                          for (std::uint64_t i = first; i < last; ++i) {
+                            double weight = 1;
+                            for (unsigned j = 0; j < d; ++j) {
+                              x[j] = rule.nodes[digit[j]];
+                              weight *= rule.weights[digit[j]];
+                            }
+                            sum.add(weight * f(x.data(), d));
+                            for (unsigned j = 0; j < d && ++digit[j] == m; ++j) digit[j] = 0;  // odometer
+                          }
+                          block_sums[b] = sum.value();
+                        }
+                      });
   });
   distributed::gather_shares(block_sums, blocks);
   CompensatedSum total;
@@ -170,7 +171,8 @@ double tensor_product_integral(const PointFunction& f, unsigned d, const Quadrat
 std::vector<std::string> dimension_integrand_names() {
   std::vector<std::string> names{"sine-product"};
   for (const IntegrandInfo& info : integrands())
-    if (info.max_dim >= 2 && std::find(info.properties.begin(), info.properties.end(), "smooth") != info.properties.end())
+    if (info.max_dim >= 2 &&
+        std::find(info.properties.begin(), info.properties.end(), "smooth") != info.properties.end())
       names.push_back(info.name);
   return names;
 }
@@ -319,8 +321,9 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
       const DimensionSeries& series = study.series[task.series];
       const std::uint64_t n = series.n[task.point];
       const std::uint64_t stream = hash64(request.seed, series.d, n, task.sobol ? 1 : 0);
-      const double estimate = task.sobol ? sobol_estimate(integrands[task.series].f, series.d, n, hash64(stream, task.run))
-                                         : monte_carlo_estimate(integrands[task.series].f, series.d, n, stream, task.run);
+      const double estimate = task.sobol
+                                  ? sobol_estimate(integrands[task.series].f, series.d, n, hash64(stream, task.run))
+                                  : monte_carlo_estimate(integrands[task.series].f, series.d, n, stream, task.run);
       squared_error[t] = (estimate - series.exact) * (estimate - series.exact);
     });
   });

@@ -177,7 +177,8 @@ using edge_detail::line_value;
 
 /// The best line through point `centre`: a sweep over the directions of the
 /// other points, then the chord-bisecting directions located in that order.
-EdgeDiscrepancy sweep_about(const PointView& points, std::size_t centre, std::vector<Ray>& rays, std::vector<Group>& groups) {
+EdgeDiscrepancy sweep_about(const PointView& points, std::size_t centre, std::vector<Ray>& rays,
+                            std::vector<Group>& groups) {
   const double px = points(centre, 0), py = points(centre, 1);
   rays.clear();
   groups.clear();
@@ -218,9 +219,8 @@ EdgeDiscrepancy sweep_about(const PointView& points, std::size_t centre, std::ve
   };
   for (std::size_t first = 0; first < rays.size();) {
     std::size_t last = first + 1, flipped = rays[first].flipped;
-    while (last < rays.size() &&
-           turn(rays[first].flipped, rays[first].index, rays[last].flipped, points(rays[last].index, 0),
-                points(rays[last].index, 1)) == 0)
+    while (last < rays.size() && turn(rays[first].flipped, rays[first].index, rays[last].flipped,
+                                      points(rays[last].index, 0), points(rays[last].index, 1)) == 0)
       flipped += rays[last++].flipped;
     groups.push_back({first, last, negative, flipped});
     // Turning through the group, forward points cross to the negative side and flipped ones leave it.
@@ -245,8 +245,7 @@ EdgeDiscrepancy sweep_about(const PointView& points, std::size_t centre, std::ve
       const Ray& ray = rays[position->first];
       if (turn(ray.flipped, ray.index, flip, ex[k], ey[k]) == 0)
         consider(vx, vy, position->negative_before - position->flipped, on_centre + (position->last - position->first));
-      else
-        consider(vx, vy, position->negative_before, on_centre);
+      else consider(vx, vy, position->negative_before, on_centre);
     }
   }
   return best;

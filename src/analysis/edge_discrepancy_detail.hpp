@@ -26,7 +26,8 @@ inline LineValue line_value(double px, double py, double vx, double vy, std::siz
   const double offset = nx * px + ny * py;
   const double area = half_plane_area(nx, ny, offset);
   const double n = static_cast<double>(total);
-  const double value = std::max(static_cast<double>(negative + on_line) / n - area, area - static_cast<double>(negative) / n);
+  const double value =
+      std::max(static_cast<double>(negative + on_line) / n - area, area - static_cast<double>(negative) / n);
   double angle = std::atan2(ny, nx);
   if (angle < 0) angle += 2 * pi;
   return {value, {angle, offset}};

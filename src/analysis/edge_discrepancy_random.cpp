@@ -99,7 +99,8 @@ EdgeDiscrepancy edge_discrepancy_search(const PointView& points, std::size_t ang
   std::vector<EdgeDiscrepancy> coarse(angles);
   edge_detail::parallel_ranges(angles, threads, [&](std::size_t begin, std::size_t end) {
     std::vector<double> projections;
-    for (std::size_t k = begin; k < end; ++k) coarse[k] = best_offset(points, step * static_cast<double>(k), projections);
+    for (std::size_t k = begin; k < end; ++k)
+      coarse[k] = best_offset(points, step * static_cast<double>(k), projections);
   });
   const double coarse_best = edge_detail::best_of(coarse).value;
   std::vector<std::size_t> promising;

@@ -56,7 +56,9 @@ double expected_kernel_shell(double r, double sigma, std::size_t d) {
   for (std::size_t k = 0; k < d; ++k) {
     if (k == 0) moment[k] = 0.5 * (std::erf(b / std::sqrt(2.0)) - std::erf(a / std::sqrt(2.0)));
     else if (k == 1) moment[k] = density(a) - density(b);
-    else moment[k] = static_cast<double>(k - 1) * moment[k - 2] - (power(b, k - 1) * density(b) - power(a, k - 1) * density(a));
+    else
+      moment[k] =
+          static_cast<double>(k - 1) * moment[k - 2] - (power(b, k - 1) * density(b) - power(a, k - 1) * density(a));
   }
   // (r − σu)^{d−1} = Σ_k C(d−1, k) r^{d−1−k} (−σ)^k u^k
   double sum = 0, binomial = 1;
@@ -146,7 +148,8 @@ PairCorrelation default_pair_correlation_grid(std::size_t n, std::size_t d, std:
     largest = 0.5 / (2.5 + 0.4) * 2.5;
     grid.sigma = 0.1 * largest / 2.5;
   }
-  for (std::size_t k = 1; k <= count; ++k) grid.radius.push_back(largest * static_cast<double>(k) / static_cast<double>(count));
+  for (std::size_t k = 1; k <= count; ++k)
+    grid.radius.push_back(largest * static_cast<double>(k) / static_cast<double>(count));
   return grid;
 }
 
@@ -189,7 +192,8 @@ PairCorrelation pair_correlation(const PointView& points, const std::vector<doub
         return true;
       });
   };
-  oneapi::tbb::task_arena arena(threads == 0 ? oneapi::tbb::task_arena::automatic : static_cast<int>(std::max(1u, threads)));
+  oneapi::tbb::task_arena arena(threads == 0 ? oneapi::tbb::task_arena::automatic
+                                             : static_cast<int>(std::max(1u, threads)));
   arena.execute([&] { oneapi::tbb::parallel_for(std::size_t{0}, blocks, run_block); });
 
   PairCorrelation result;

@@ -104,7 +104,8 @@ std::vector<double> image_power_direct(const std::vector<double>& values, int wi
       Complex sum = 0;
       for (std::size_t y = 0; y < h; ++y)
         for (std::size_t k = 0; k < w; ++k) {
-          const double phase = -2 * std::numbers::pi * (double(fx) * double(k) / width + double(fy) * double(y) / height);
+          const double phase =
+              -2 * std::numbers::pi * (double(fx) * double(k) / width + double(fy) * double(y) / height);
           sum += x[y * w + k] * std::exp(Complex(0, phase));
         }
       power[std::size_t(fy + height / 2) * w + std::size_t(fx + width / 2)] = std::norm(sum) * scale;

@@ -113,13 +113,17 @@ ReplicateResult run_replicate(const Scene& scene, std::uint64_t samples, std::ui
   return {stats.mean(), stats.variance(), elapsed.count()};
 }
 
-ReplicateResult run_replicate(const Scene& scene, std::string_view method, std::uint64_t samples,
-                              std::uint64_t stream, std::uint64_t run) {
+ReplicateResult run_replicate(const Scene& scene, std::string_view method, std::uint64_t samples, std::uint64_t stream,
+                              std::uint64_t run) {
   switch (method_of(method)) {
-    case Method::uniform: return run_replicate<Method::uniform>(scene, samples, stream, run);
-    case Method::cosine: return run_replicate<Method::cosine>(scene, samples, stream, run);
-    case Method::area: return run_replicate<Method::area>(scene, samples, stream, run);
-    case Method::solid_angle: break;
+    case Method::uniform:
+      return run_replicate<Method::uniform>(scene, samples, stream, run);
+    case Method::cosine:
+      return run_replicate<Method::cosine>(scene, samples, stream, run);
+    case Method::area:
+      return run_replicate<Method::area>(scene, samples, stream, run);
+    case Method::solid_angle:
+      break;
   }
   return run_replicate<Method::solid_angle>(scene, samples, stream, run);
 }
@@ -147,17 +151,14 @@ MethodResult summarize(std::string method, const std::vector<ReplicateResult>& r
 void fill_ratios(ImportanceComparison& c) {
   const double va = c.a.variance, vb = c.b.variance;
   c.variance_ratio = vb > 0 ? va / vb : (va > 0 ? inf : nan);
-  c.variance_ratio_stderr = (va > 0 && vb > 0) ? c.variance_ratio * std::hypot(c.a.variance_stderr / va,
-                                                                               c.b.variance_stderr / vb)
-                                               : nan;
-  c.predicted_variance_ratio =
-      c.b.predicted_variance > 0 ? c.a.predicted_variance / c.b.predicted_variance : inf;
+  c.variance_ratio_stderr =
+      (va > 0 && vb > 0) ? c.variance_ratio * std::hypot(c.a.variance_stderr / va, c.b.variance_stderr / vb) : nan;
+  c.predicted_variance_ratio = c.b.predicted_variance > 0 ? c.a.predicted_variance / c.b.predicted_variance : inf;
   c.time_ratio = c.a.seconds_per_sample / c.b.seconds_per_sample;
   if (va > 0 && vb > 0)
-    c.efficiency_ratio = estimators::compare_efficiency(va, c.a.seconds_per_sample, vb, c.b.seconds_per_sample)
-                             .efficiency_ratio;
-  else
-    c.efficiency_ratio = vb == 0 && va > 0 ? inf : nan;
+    c.efficiency_ratio =
+        estimators::compare_efficiency(va, c.a.seconds_per_sample, vb, c.b.seconds_per_sample).efficiency_ratio;
+  else c.efficiency_ratio = vb == 0 && va > 0 ? inf : nan;
 }
 
 }  // namespace
@@ -170,7 +171,8 @@ void validate(const RectangleLight& light) {
   using namespace vector3;
   for (const Vec& v : {light.corner, light.edge_u, light.edge_v})
     for (double x : v) require(std::isfinite(x), "light", text(v), "coordinates must be finite");
-  require(std::isfinite(light.radiance) && light.radiance > 0, "radiance", light.radiance, "must be positive and finite");
+  require(std::isfinite(light.radiance) && light.radiance > 0, "radiance", light.radiance,
+          "must be positive and finite");
   for (const Vec& c : corners(light))
     require(c[2] > 0, "light", text(c), "every corner must lie above the receiver plane z = 0");
   (void)SphericalRectangle<double>(light.corner, light.edge_u, light.edge_v);  // edges: non-zero, perpendicular
@@ -286,16 +288,17 @@ ImportanceStudy run_importance_study(const ImportanceStudyRequest& request) {
       // Y = 2πL cos θ on the light (p = 1/2π), 0 off it (solid angle 2π − Ω).
       c.a.predicted_variance =
           (central([&](double cs, double, double) { return 2 * pi * L * cs; }, solid_angle_density) +
-           (2 * pi - omega) * e * e) / (2 * pi);
+           (2 * pi - omega) * e * e) /
+          (2 * pi);
       // Y = πL on the light, 0 off it, p = cos θ/π: Var = πL·E − E² (no cancellation: E ≤ πL).
       c.b.predicted_variance = pi * L * e - e * e;
     } else {
       c.a.method = "area", c.b.method = "solid-angle";
-      c.a.predicted_variance = central([&](double cs, double c_light, double r2) { return L * cs * area * c_light / r2; },
-                                       [&](double, double, double) { return 1 / area; });
-      c.b.predicted_variance =
-          central([&](double cs, double, double) { return L * omega * cs; },
-                  [&](double, double c_light, double r2) { return c_light / (r2 * omega); });
+      c.a.predicted_variance =
+          central([&](double cs, double c_light, double r2) { return L * cs * area * c_light / r2; },
+                  [&](double, double, double) { return 1 / area; });
+      c.b.predicted_variance = central([&](double cs, double, double) { return L * omega * cs; },
+                                       [&](double, double c_light, double r2) { return c_light / (r2 * omega); });
     }
     setups.push_back({c, scene});
   };

@@ -73,9 +73,9 @@ static void check_representable(const IntegrandInfo& info, const IntegrandParams
 std::unique_ptr<const Integrand> make_integrand(std::string_view name, unsigned d, const IntegrandParams& params) {
   const IntegrandInfo& info = find_integrand(name);
   if (d == 0) d = info.default_dim;
-  require(d >= info.min_dim && d <= info.max_dim, "d", d,
-          info.name + " is defined for d in [" + std::to_string(info.min_dim) + ", " + std::to_string(info.max_dim) +
-              "]");
+  require(
+      d >= info.min_dim && d <= info.max_dim, "d", d,
+      info.name + " is defined for d in [" + std::to_string(info.min_dim) + ", " + std::to_string(info.max_dim) + "]");
   IntegrandParams filled;
   for (const auto& param : info.params) filled[param.name] = as_reals(parse_param(param, param.default_value));
   for (const auto& [key, values] : params) {

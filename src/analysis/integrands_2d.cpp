@@ -67,9 +67,8 @@ std::vector<IntegrandInfo> planar() {
   auto disk = planar_entry("disk", "1[x^2 + y^2 < 2/pi]: quarter disk of area 1/2 (curved edge)",
                            {"indicator", "discontinuous"});
   disk.make = [](unsigned, const IntegrandParams&) {
-    return make_function_integrand(2, 0.5, [](const double* x) {
-      return x[0] * x[0] + x[1] * x[1] < 2 / std::numbers::pi ? 1.0 : 0.0;
-    });
+    return make_function_integrand(
+        2, 0.5, [](const double* x) { return x[0] * x[0] + x[1] * x[1] < 2 / std::numbers::pi ? 1.0 : 0.0; });
   };
   list.push_back(std::move(disk));
 

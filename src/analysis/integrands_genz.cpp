@@ -39,10 +39,10 @@ IntegrandInfo genz_entry(std::string name, std::string description, std::vector<
   info.max_dim = max_dim;
   info.default_dim = 2;
   info.properties = std::move(properties);
-  info.params = {params::reals("a", std::move(a_description) + "; 1 number (every dimension) or d numbers", "5",
-                               a_range, {1, max_dim}),
-                 params::reals("u", "location; 1 number (every dimension) or d numbers", "0.5", closed(0, 1),
-                               {1, max_dim})};
+  info.params = {
+      params::reals("a", std::move(a_description) + "; 1 number (every dimension) or d numbers", "5", a_range,
+                    {1, max_dim}),
+      params::reals("u", "location; 1 number (every dimension) or d numbers", "0.5", closed(0, 1), {1, max_dim})};
   return info;
 }
 
@@ -152,10 +152,10 @@ std::vector<IntegrandInfo> genz() {
   };
   list.push_back(std::move(continuous));
 
-  auto discontinuous = genz_entry(
-      "genz-discontinuous",
-      "exp(sum a_i x_i) where x_1 <= u_1 and x_2 <= u_2, else 0 (Genz 1984, discontinuous; u_3.. unused)",
-      {"discontinuous"}, max_dim, "growth rate", any_real());
+  auto discontinuous =
+      genz_entry("genz-discontinuous",
+                 "exp(sum a_i x_i) where x_1 <= u_1 and x_2 <= u_2, else 0 (Genz 1984, discontinuous; u_3.. unused)",
+                 {"discontinuous"}, max_dim, "growth rate", any_real());
   discontinuous.make = [](unsigned d, const IntegrandParams& params) {
     const auto a = expand(params, "a", d);
     const auto u = expand(params, "u", d);

@@ -28,9 +28,9 @@ void check_every_step(const ToleranceRequest& request, unsigned d) {
     } catch (const invalid_argument& refused) {
       if (n == request.integration.n) throw;
       throw invalid_argument("max-n", std::to_string(request.max_n),
-                             "doubling from n = " + std::to_string(request.integration.n) + " reaches n = " +
-                                 std::to_string(n) + ", which " + choice.name + " refuses (" + refused.what() +
-                                 "); give a smaller --max-n or a sampler that takes every 2^k n");
+                             "doubling from n = " + std::to_string(request.integration.n) +
+                                 " reaches n = " + std::to_string(n) + ", which " + choice.name + " refuses (" +
+                                 refused.what() + "); give a smaller --max-n or a sampler that takes every 2^k n");
     }
     if (n > request.max_n / 2) break;
   }

@@ -33,12 +33,10 @@ double product_variation(double variation_g, double g_at_1, double variation_h, 
 
 const std::vector<VariationTestFunction>& variation_test_functions() {
   static const std::vector<VariationTestFunction> functions{
-      {"xy", "x·y", 0.25, product_variation(1, 1, 1, 1),
-       "product of increasing x, y: (V(x) + 1)² − 1 with V(x) = 1",
+      {"xy", "x·y", 0.25, product_variation(1, 1, 1, 1), "product of increasing x, y: (V(x) + 1)² − 1 with V(x) = 1",
        [](double x, double y) { return x * y; }},
       {"exp-sum", "e^(x+y)", (e - 1) * (e - 1), product_variation(e - 1, e, e - 1, e),
-       "product of increasing e^x, e^y: (e − 1 + e)² − e²",
-       [](double x, double y) { return std::exp(x + y); }},
+       "product of increasing e^x, e^y: (e − 1 + e)² − e²", [](double x, double y) { return std::exp(x + y); }},
       {"rational", "1/((1+x)(1+y))", std::numbers::ln2 * std::numbers::ln2, product_variation(0.5, 0.5, 0.5, 0.5),
        "product of decreasing 1/(1+x), 1/(1+y): (1/2 + 1/2)² − 1/4",
        [](double x, double y) { return 1 / ((1 + x) * (1 + y)); }},

@@ -50,7 +50,9 @@ struct StarPair {
   static double g(double a, double, double b, double) { return 1.0 - std::max(a, b); }
 };
 struct CenteredPair {
-  static double g(double a, double ca, double b, double cb) { return 1.0 + 0.5 * ca + 0.5 * cb - 0.5 * std::abs(a - b); }
+  static double g(double a, double ca, double b, double cb) {
+    return 1.0 + 0.5 * ca + 0.5 * cb - 0.5 * std::abs(a - b);
+  }
 };
 struct WrapPair {
   static double g(double a, double, double b, double) {
@@ -65,7 +67,7 @@ struct MixturePair {
   }
 };
 
-constexpr std::size_t kRowBlock = 32;   // rows per task (fixed: the reduction order never depends on threads)
+constexpr std::size_t kRowBlock = 32;     // rows per task (fixed: the reduction order never depends on threads)
 constexpr std::size_t kColumnTile = 256;  // partners kept in L1 while the block's rows pass over them
 
 /// The row blocks in the order their sums are kept: 0, B−1, 1, B−2, … A
@@ -152,10 +154,12 @@ long double pair_sum(const Columns& cols, unsigned threads) {
   } else {
     tbb::task_arena arena(static_cast<int>(threads));
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t slot = r.begin(); slot < r.end(); ++slot) block(slot);
-                        }, tbb::simple_partitioner());
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(mine.begin, mine.end, 1),
+          [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t slot = r.begin(); slot < r.end(); ++slot) block(slot);
+          },
+          tbb::simple_partitioner());
     });
   }
   distributed::gather_shares(partial, blocks);

@@ -127,8 +127,17 @@ real pair_sum_2d(const std::vector<double>& x, const std::vector<double>& y) {
 class Dominance3 {
  public:
   Dominance3(const std::vector<double>& y, const std::vector<double>& z)
-      : y_(y), z_(z), by_y_(y.size()), by_z_(y.size()), scratch_(y.size()), local_rank_(y.size()),
-        cross_(y.size(), 0.0L), count_(y.size()), weight_z_(y.size()), weight_y_(y.size()), weight_yz_(y.size()) {
+      : y_(y),
+        z_(z),
+        by_y_(y.size()),
+        by_z_(y.size()),
+        scratch_(y.size()),
+        local_rank_(y.size()),
+        cross_(y.size(), 0.0L),
+        count_(y.size()),
+        weight_z_(y.size()),
+        weight_y_(y.size()),
+        weight_yz_(y.size()) {
     std::iota(by_y_.begin(), by_y_.end(), std::size_t{0});
     std::iota(by_z_.begin(), by_z_.end(), std::size_t{0});
   }
@@ -214,12 +223,16 @@ real pair_sum_3d(const std::vector<double>& x, const std::vector<double>& y, con
 }  // namespace
 
 long double l2_star_pair_sum_fast(const PointView& points) {
-  require(points.d >= 1 && points.d <= 3, "d", points.d, "the fast L2-star algorithm covers d <= 3; use pairwise (Warnock)");
+  require(points.d >= 1 && points.d <= 3, "d", points.d,
+          "the fast L2-star algorithm covers d <= 3; use pairwise (Warnock)");
   const auto columns = sorted_by_first(points);
   switch (points.d) {
-    case 1: return pair_sum_1d(columns[0]);
-    case 2: return pair_sum_2d(columns[0], columns[1]);
-    default: return pair_sum_3d(columns[0], columns[1], columns[2]);
+    case 1:
+      return pair_sum_1d(columns[0]);
+    case 2:
+      return pair_sum_2d(columns[0], columns[1]);
+    default:
+      return pair_sum_3d(columns[0], columns[1], columns[2]);
   }
 }
 

@@ -50,8 +50,8 @@ void require_measure_memory(std::string_view name, std::size_t n, std::size_t d,
   MeasureRequest bound = request;
   bound.values = bind_params(info.name, info.params, request.params, "measure-param");
   const double working = info.working_bytes ? info.working_bytes(n, d, bound) : 0.0;
-  require_memory(points + working, std::to_string(n) + " x " + std::to_string(d) + " points and their " + info.name +
-                                       " measure");
+  require_memory(points + working,
+                 std::to_string(n) + " x " + std::to_string(d) + " points and their " + info.name + " measure");
 }
 
 MeasureResult compute_measure(std::string_view name, const PointView& points, const MeasureRequest& request) {
@@ -69,9 +69,9 @@ MeasureResult compute_measure(std::string_view name, const PointView& points, co
   // Points handed in (a file, a Python array) are already in memory; what
   // the measure allocates for them is checked here, before it starts.
   if (info.working_bytes)
-    require_memory(info.working_bytes(points.n, points.d, bound),
-                   "the " + info.name + " measure of " + std::to_string(points.n) + " x " +
-                       std::to_string(points.d) + " points");
+    require_memory(
+        info.working_bytes(points.n, points.d, bound),
+        "the " + info.name + " measure of " + std::to_string(points.n) + " x " + std::to_string(points.d) + " points");
   MeasureResult result = info.compute(points, bound);
   // A measure whose terms leave double precision (products of d factors
   // that over- or underflow at large d) has no number to report: refused,

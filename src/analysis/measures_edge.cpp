@@ -53,12 +53,13 @@ std::vector<MeasureInfo> edge() {
       .validate = nullptr,
       .compute =
           [](const PointView& points, const MeasureRequest& request) {
-            const auto estimate =
-                random_edge_discrepancy(points, request.values.unsigned_integer("lines"), request.values.unsigned_integer("seed"), request.threads);
+            const auto estimate = random_edge_discrepancy(points, request.values.unsigned_integer("lines"),
+                                                          request.values.unsigned_integer("seed"), request.threads);
             MeasureResult result;
             result.value = estimate.rms;
             result.kind = "estimate";
-            result.extras = {{"mean", estimate.mean}, {"max", estimate.max}, {"lines", static_cast<double>(estimate.lines)}};
+            result.extras = {
+                {"mean", estimate.mean}, {"max", estimate.max}, {"lines", static_cast<double>(estimate.lines)}};
             return result;
           },
       // One value per line, kept to sum in index order (the same result

@@ -70,8 +70,8 @@ MeasureInfo min_distance_measure() {
   info.description =
       "smallest distance between two points (Euclidean, or toroidal with toroidal=1), by a neighbour grid for d <= 8; "
       "extras first, second (a closest pair's rows)";
-  info.params = {params::flag("toroidal", "1: distances on the unit torus (axis differences wrapped to [-1/2, 1/2])",
-                              "0")};
+  info.params = {
+      params::flag("toroidal", "1: distances on the unit torus (axis differences wrapped to [-1/2, 1/2])", "0")};
   info.compute = [](const PointView& points, const MeasureRequest& request) {
     const MinimumDistance closest = minimum_distance(points, toroidal_of(request));
     MeasureResult result;
@@ -88,7 +88,8 @@ MeasureInfo poisson_radius_measure() {
   MeasureInfo info;
   info.name = "poisson-radius";
   info.description =
-      "normalized Poisson-disk radius rho = d_min / d_max, d_max the minimum distance of the densest lattice packing of "
+      "normalized Poisson-disk radius rho = d_min / d_max, d_max the minimum distance of the densest lattice packing "
+      "of "
       "N points (2D: sqrt(2/(sqrt(3) N)); Lagae & Dutre 2008); toroidal by default as in their comparison; extras "
       "min_distance, packing_distance";
   info.min_dim = 1;

@@ -61,7 +61,8 @@ std::vector<MeasureInfo> l2() {
   MeasureInfo star = l2_measure(
       "l2-star",
       "L2-star discrepancy: L2 norm of the local discrepancy over anchored boxes [0,x), by Warnock's formula (Warnock "
-      "1972), O(N log N) for d = 2 and O(N log^2 N) for d = 3 (Heinrich 1996); value = D, extras squared = D^2 (scipy's "
+      "1972), O(N log N) for d = 2 and O(N log^2 N) for d = 3 (Heinrich 1996); value = D, extras squared = D^2 "
+      "(scipy's "
       "'L2-star' returns D)",
       L2Kind::star);
   star.params = {params::choice("algorithm", "auto (fast for d <= 3), warnock (O(d N^2)) or fast (d <= 3)", "auto",

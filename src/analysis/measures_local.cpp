@@ -32,8 +32,8 @@ MeasureInfo star_box() {
     const StarDiscrepancyBox box = star_discrepancy_box(points);
     MeasureResult result;
     result.value = box.value;
-    result.extras = {{"x", box.x}, {"y", box.y}, {"closed", box.closed ? 1.0 : 0.0},
-                     {"count", static_cast<double>(box.count)}};
+    result.extras = {
+        {"x", box.x}, {"y", box.y}, {"closed", box.closed ? 1.0 : 0.0}, {"count", static_cast<double>(box.count)}};
     return result;
   };
   return info;

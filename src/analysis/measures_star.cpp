@@ -52,8 +52,7 @@ std::vector<MeasureInfo> star() {
                    "bounds: width of the delta-partition, upper - lower <= delta; default 0.05 for d <= 3, 0.1 for "
                    "d = 4, 5, 0.2 for d = 6, 7, 0.4 above, doubled until the partition fits in max_boxes",
                    "", open(0, 1)),
-      params::integer("max_boxes", "bounds: the most boxes the delta-partition may use", kDefaultMaxBoxes,
-                      at_least(1)),
+      params::integer("max_boxes", "bounds: the most boxes the delta-partition may use", kDefaultMaxBoxes, at_least(1)),
   };
   info.validate = [](const PointView& points, const MeasureRequest& request) {
     const std::string& method = method_of(request);

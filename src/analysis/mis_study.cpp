@@ -39,9 +39,8 @@ double graded_integral(double c, const G& g) {
   static const std::array<double, 8> x{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
                                        -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
                                        0.7966664774136267,  0.9602898564975363};
-  static const std::array<double, 8> w{0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                                       0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                                       0.2223810344533745, 0.1012285362903763};
+  static const std::array<double, 8> w{0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                                       0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
   double sum = 0, left = c;
   for (int k = 1; k <= 81; ++k) {
     const double right = k == 81 ? 1.0 : 1 - (1 - c) * std::pow(0.75, k);
@@ -67,7 +66,8 @@ double strategy_variance(const Setup& s, bool light, const Weight& weight) {
 /// The weight of a strategy's sample, equal sample counts on both sides
 /// (the heuristics of estimators/mis.hpp, which the measured runs use too).
 double heuristic_weight(double self, double other, bool power, double beta) {
-  return power ? estimators::power_heuristic(1, self, 1, other, beta) : estimators::balance_heuristic(1, self, 1, other);
+  return power ? estimators::power_heuristic(1, self, 1, other, beta)
+               : estimators::balance_heuristic(1, self, 1, other);
 }
 
 /// One replicate's mean and per-sample variance.
@@ -132,14 +132,17 @@ double mis_predicted_variance(const std::string& method, double exponent, double
   const double q = -std::expm1((exponent + 1) * std::log(s.c));
   if (method == "light")
     return (1 - s.c) * (exponent + 1) * (exponent + 1) * -std::expm1((2 * exponent + 1) * std::log(s.c)) /
-               (2 * exponent + 1) - q * q;
+               (2 * exponent + 1) -
+           q * q;
   if (method == "bsdf") return q * tail;
   const bool power = method == "power";
   if (!power && method != "balance")
     throw invalid_argument("method", method, "must be one of light, bsdf, balance, power");
   // N/2 samples of each strategy: N · (V_l/(N/2) + V_b/(N/2)) = 2 (V_l + V_b).
-  const double v_light = strategy_variance(s, true, [&](double t) { return heuristic_weight(s.light(), s.lobe(t), power, beta); });
-  const double v_bsdf = strategy_variance(s, false, [&](double t) { return heuristic_weight(s.lobe(t), s.light(), power, beta); });
+  const double v_light =
+      strategy_variance(s, true, [&](double t) { return heuristic_weight(s.light(), s.lobe(t), power, beta); });
+  const double v_bsdf =
+      strategy_variance(s, false, [&](double t) { return heuristic_weight(s.lobe(t), s.light(), power, beta); });
   return 2 * (v_light + v_bsdf);
 }
 

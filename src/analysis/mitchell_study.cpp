@@ -17,12 +17,11 @@
 namespace stratum::analysis {
 
 const std::vector<MitchellPattern>& mitchell_patterns() {
-  static const std::vector<MitchellPattern> patterns{
-      {"Zaremba", "zaremba", {}, ""},
-      {"jittered", "jittered", {}, ""},
-      {"Poisson disk", "poisson-disk", {{"periodic", "1"}}, ""},
-      {"N-rooks", "n-rooks", {}, ""},
-      {"random", "random", {}, ""}};
+  static const std::vector<MitchellPattern> patterns{{"Zaremba", "zaremba", {}, ""},
+                                                     {"jittered", "jittered", {}, ""},
+                                                     {"Poisson disk", "poisson-disk", {{"periodic", "1"}}, ""},
+                                                     {"N-rooks", "n-rooks", {}, ""},
+                                                     {"random", "random", {}, ""}};
   return patterns;
 }
 
@@ -83,7 +82,8 @@ std::size_t nearest_valid_count(const MitchellPattern& pattern, std::size_t requ
     if (step <= requested && valid(requested - step)) return requested - step;
     if (valid(requested + step)) return requested + step;
   }
-  throw invalid_argument("counts", std::to_string(requested), "the sampler " + sampler.name + " takes " + sampler.counts);
+  throw invalid_argument("counts", std::to_string(requested),
+                         "the sampler " + sampler.name + " takes " + sampler.counts);
 }
 
 /// printf-style formatting into a std::string (the analysis library has no fmt dependency).
@@ -188,7 +188,8 @@ MitchellStudy run_mitchell_study(const MitchellStudyOptions& options) {
     const std::size_t n = views.front().n;
     const int max_frequency = static_cast<int>(std::ceil(3 * std::sqrt(static_cast<double>(n))));
     const RadialPower radial = radial_average(mean_periodogram(views, max_frequency, options.threads));
-    study.spectra.push_back({mitchell_pattern_id(patterns[p]), n, radial.frequency, radial.power, spectrum_points[p * k]});
+    study.spectra.push_back(
+        {mitchell_pattern_id(patterns[p]), n, radial.frequency, radial.power, spectrum_points[p * k]});
   }
   return study;
 }

@@ -27,8 +27,9 @@ RatioInterval paired_ratio_interval(const std::vector<double>& numerator, const 
   interval.count = unsigned(logs.size());
   interval.confidence = confidence;
   interval.estimate = std::exp(m.mean);
-  const double t =
-      logs.size() < 2 ? 0 : boost::math::quantile(boost::math::students_t(double(logs.size() - 1)), (1 + confidence) / 2);
+  const double t = logs.size() < 2
+                       ? 0
+                       : boost::math::quantile(boost::math::students_t(double(logs.size() - 1)), (1 + confidence) / 2);
   interval.low = std::exp(m.mean - t * m.standard_error);
   interval.high = std::exp(m.mean + t * m.standard_error);
   return interval;

@@ -116,7 +116,8 @@ void fill_exponentials(const PointView& points, std::size_t begin, std::size_t c
   for (std::size_t t = 0; t < width; ++t) {
     if (t % anchor_every == 0) {
       const double k = static_cast<double>(static_cast<long long>(t) - max_frequency);
-      for (std::size_t b = 0; b < count; ++b) unit_phasor(k * points(begin + b, 0), e_re[b * width + t], e_im[b * width + t]);
+      for (std::size_t b = 0; b < count; ++b)
+        unit_phasor(k * points(begin + b, 0), e_re[b * width + t], e_im[b * width + t]);
       continue;
     }
     for (std::size_t b = 0; b < count; ++b) {
@@ -211,8 +212,8 @@ void check_realizations(const std::vector<PointView>& realizations, int max_freq
   const double values = first.d == 1 ? side : side * side;
   require(values <= static_cast<double>(max_periodogram_values()), "max_frequency", max_frequency,
           "the frequency grid (2K+1)^d must have at most 2^25 values (K ≤ " +
-              std::to_string(first.d == 1 ? (max_periodogram_values() - 1) / 2 : 2896) + " for d = " +
-              std::to_string(first.d) + ")");
+              std::to_string(first.d == 1 ? (max_periodogram_values() - 1) / 2 : 2896) +
+              " for d = " + std::to_string(first.d) + ")");
 }
 
 Periodogram empty_periodogram(const std::vector<PointView>& realizations, int max_frequency) {
@@ -253,7 +254,8 @@ Periodogram mean_periodogram(const std::vector<PointView>& realizations, int max
   if (result.d == 2)
     for (std::size_t row = 0; row < k; ++row) {  // ky = row − K < 0 mirrors −ky
       const std::size_t mirror = 2 * k - row;
-      for (std::size_t t = 0; t < side; ++t) result.power[row * side + t] = result.power[mirror * side + (side - 1 - t)];
+      for (std::size_t t = 0; t < side; ++t)
+        result.power[row * side + t] = result.power[mirror * side + (side - 1 - t)];
     }
   divide_by_realizations(result);
   return result;
@@ -284,8 +286,9 @@ RadialPower radial_average(const Periodogram& periodogram) {
   const int k = periodogram.max_frequency;
   require(k >= 1, "max_frequency", k, "must be at least 1");
   require(periodogram.d == 1 || periodogram.d == 2, "d", periodogram.d, "must be 1 or 2");
-  require(periodogram.power.size() == (periodogram.d == 1 ? periodogram.side() : periodogram.side() * periodogram.side()),
-          "power.size()", periodogram.power.size(), "must be (2K+1)^d");
+  require(
+      periodogram.power.size() == (periodogram.d == 1 ? periodogram.side() : periodogram.side() * periodogram.side()),
+      "power.size()", periodogram.power.size(), "must be (2K+1)^d");
   const std::size_t rings = static_cast<std::size_t>(k);
   // Rings over the half plane {ky > 0} ∪ {ky = 0, kx > 0}: the other half
   // repeats the same values (P(−k) = P(k)), which would bias the variance.
@@ -311,7 +314,8 @@ RadialPower radial_average(const Periodogram& periodogram) {
   for (std::size_t r = 1; r <= rings; ++r) {
     const double mean = half_count[r] > 0 ? sum[r] / half_count[r] : std::numeric_limits<double>::quiet_NaN();
     double anisotropy = std::numeric_limits<double>::quiet_NaN();
-    if (half_count[r] >= 2 && mean > 0) anisotropy = 10.0 * std::log10(squares[r] / (half_count[r] - 1) / (mean * mean));
+    if (half_count[r] >= 2 && mean > 0)
+      anisotropy = 10.0 * std::log10(squares[r] / (half_count[r] - 1) / (mean * mean));
     result.radius.push_back(static_cast<double>(r));
     result.frequency.push_back(static_cast<double>(r) / scale);
     result.power.push_back(mean);

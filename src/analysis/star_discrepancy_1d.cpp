@@ -46,15 +46,16 @@ double star_discrepancy_exact(const PointView& points, unsigned threads) {
   if (points.d == 1) return star_discrepancy_1d(points);
   if (!star_exact_feasible(points.n, points.d)) {
     if (points.d == 2)
-      throw invalid_argument("n", std::to_string(points.n),
-                             "the exact 2D star discrepancy (O(n^2) sweep) handles n <= " +
-                                 std::to_string(kStarExact2dMaxPoints) +
-                                 "; method=bounds (Thiemard's delta-partition) gives lower and upper bounds for any n");
-    throw invalid_argument("d", std::to_string(points.d),
-                           "the exact star discrepancy for d >= 3 (Dobkin-Eppstein-Mitchell, O(n^(1+d/2))) handles n <= " +
-                               std::to_string(star_dem_max_points(points.d)) + " at d = " +
-                               std::to_string(points.d) + " (here n = " + std::to_string(points.n) +
-                               "); method=bounds (Thiemard's delta-partition) gives lower and upper bounds for any d");
+      throw invalid_argument(
+          "n", std::to_string(points.n),
+          "the exact 2D star discrepancy (O(n^2) sweep) handles n <= " + std::to_string(kStarExact2dMaxPoints) +
+              "; method=bounds (Thiemard's delta-partition) gives lower and upper bounds for any n");
+    throw invalid_argument(
+        "d", std::to_string(points.d),
+        "the exact star discrepancy for d >= 3 (Dobkin-Eppstein-Mitchell, O(n^(1+d/2))) handles n <= " +
+            std::to_string(star_dem_max_points(points.d)) + " at d = " + std::to_string(points.d) +
+            " (here n = " + std::to_string(points.n) +
+            "); method=bounds (Thiemard's delta-partition) gives lower and upper bounds for any d");
   }
   if (points.d == 2) return star_discrepancy_2d(points, threads);
   return star_discrepancy_dem(points, threads);

@@ -119,8 +119,8 @@ struct Partition {
       if (fraction > v) return fraction - (fraction > 0 ? volume(largest) : 0.0);
       return next_coordinate_volume(corner) - fraction;
     };
-    b.lower = std::max({std::abs(fa - va), std::abs(fb - vb), sharpened(alpha, fa, va, alpha_max),
-                        sharpened(beta, fb, vb, beta_max)});
+    b.lower = std::max(
+        {std::abs(fa - va), std::abs(fb - vb), sharpened(alpha, fa, va, alpha_max), sharpened(beta, fb, vb, beta_max)});
     b.boxes = 1;
     return b;
   }
@@ -147,8 +147,8 @@ struct Partition {
     double fixed_alpha = 1, free_beta = 1;
     for (std::size_t j = 0; j < box.fixed; ++j) fixed_alpha *= box.alpha[j];
     for (std::size_t j = box.fixed; j < d; ++j) free_beta *= box.beta[j];
-    const double t = std::min(
-        1.0, std::pow((vb - delta) / (fixed_alpha * free_beta), 1.0 / static_cast<double>(d - box.fixed)));
+    const double t =
+        std::min(1.0, std::pow((vb - delta) / (fixed_alpha * free_beta), 1.0 / static_cast<double>(d - box.fixed)));
     std::vector<double> gamma = box.alpha;
     for (std::size_t j = box.fixed; j < d; ++j) gamma[j] = t * box.beta[j];
     const Bounds result = finish(gamma, box.beta, box.inside);
@@ -194,8 +194,8 @@ StarDiscrepancyBounds star_discrepancy_bounds(const PointView& points, double de
     for (std::size_t i = 0; i < points.n; ++i) axes[j].push_back(points(i, j));
     std::sort(axes[j].begin(), axes[j].end());
   }
-  const Partition partition{points, delta, 1.0 / static_cast<double>(points.n), max_boxes, boxes_so_far,
-                            std::move(axes)};
+  const Partition partition{points,    delta,        1.0 / static_cast<double>(points.n),
+                            max_boxes, boxes_so_far, std::move(axes)};
   std::vector<std::uint32_t> all;
   const std::vector<double> zero(points.d, 0.0), one(points.d, 1.0);
   for (std::size_t i = 0; i < points.n; ++i)
@@ -215,7 +215,8 @@ StarDiscrepancyBounds star_discrepancy_bounds(const PointView& points, double de
   // The subtrees are a job's items: a distributed job's processes each
   // finish their share; (lower, upper, boxes) per subtree are gathered.
   std::vector<Bounds> parts(frontier.size());
-  const distributed::Dealt mine = distributed::dealt(frontier.size());  // round-robin: neighbouring subtrees differ most
+  const distributed::Dealt mine =
+      distributed::dealt(frontier.size());  // round-robin: neighbouring subtrees differ most
   oneapi::tbb::task_arena arena(static_cast<int>(std::max(1u, threads)));
   arena.execute([&] {
     oneapi::tbb::parallel_for(std::size_t{0}, mine.size(), [&](std::size_t j) {

@@ -134,8 +134,8 @@ class DemSearch {
         const auto below = [&](Index i, double v) { return at(i, c) < v; };
         const auto not_above = [&](double v, Index i) { return v < at(i, c); };
         // inside[0, counted) ≤ lower < inside[counted, strict) < upper.
-        const auto counted = static_cast<std::size_t>(
-            std::upper_bound(inside.begin(), inside.end(), lower, not_above) - inside.begin());
+        const auto counted =
+            static_cast<std::size_t>(std::upper_bound(inside.begin(), inside.end(), lower, not_above) - inside.begin());
         const auto strict = static_cast<std::size_t>(
             std::lower_bound(inside.begin() + static_cast<std::ptrdiff_t>(counted), inside.end(), upper, below) -
             inside.begin());

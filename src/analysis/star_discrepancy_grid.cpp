@@ -92,8 +92,8 @@ double star_discrepancy_grid(const PointView& points, unsigned threads) {
     const bool last = t + 1 == tasks;
     const double c = last ? 1.0 : points(counted[i], top);
     const std::size_t j = last ? counted.size() : group_starts[t + 1];
-    open[t] = nested.best({counted.begin(), counted.begin() + static_cast<std::ptrdiff_t>(i)}, top - 1, c,
-                          Term::open, kNoValue);
+    open[t] = nested.best({counted.begin(), counted.begin() + static_cast<std::ptrdiff_t>(i)}, top - 1, c, Term::open,
+                          kNoValue);
     if (!last)
       closed[t] = nested.best({counted.begin(), counted.begin() + static_cast<std::ptrdiff_t>(j)}, top - 1, c,
                               Term::closed, kNoValue);

@@ -24,8 +24,9 @@ unsigned exponent_of(std::size_t n, std::uint64_t base) {
     power *= base;
     ++m;
   }
-  require(power == n, "n", n, "a (t, m, s)-net in base " + std::to_string(base) + " has N = " + std::to_string(base) +
-                                  "^m points (e.g. " + std::to_string(power / base) + " or " + std::to_string(power) + ")");
+  require(power == n, "n", n,
+          "a (t, m, s)-net in base " + std::to_string(base) + " has N = " + std::to_string(base) + "^m points (e.g. " +
+              std::to_string(power / base) + " or " + std::to_string(power) + ")");
   return m;
 }
 
@@ -81,7 +82,8 @@ NetInput prepare(const PointView& points, std::uint64_t base) {
                       static_cast<double>(points.n) * static_cast<double>(points.d);
   require(work <= max_work, "n", points.n,
           "the t-value check of " + std::to_string(points.n) + " points in d = " + std::to_string(points.d) +
-              " would visit " + to_message_string(work) + " point-intervals (at most 1e10 allowed): use fewer points or dimensions");
+              " would visit " + to_message_string(work) +
+              " point-intervals (at most 1e10 allowed): use fewer points or dimensions");
   return input;
 }
 
@@ -106,7 +108,8 @@ NetQuality net_t_value(const PointView& points, std::uint64_t base) {
   // are its integer quotients (floor(x b^d) = floor(floor(x b^m) / b^(m−d))).
   std::vector<std::uint64_t> finest(points.n * points.d);
   for (std::size_t i = 0; i < points.n; ++i)
-    for (std::size_t j = 0; j < points.d; ++j) finest[i * points.d + j] = interval_index(points(i, j), input.powers[m], nudge);
+    for (std::size_t j = 0; j < points.d; ++j)
+      finest[i * points.d + j] = interval_index(points(i, j), input.powers[m], nudge);
   std::vector<std::uint32_t> counts;
   auto is_net = [&](unsigned t) {
     const std::uint64_t capacity = input.powers[t];

@@ -93,13 +93,14 @@ std::pair<std::size_t, std::string> overflowing_number(const std::string& text) 
 nlohmann::json parse_json(const std::string& text, const std::string& argument, const std::string& origin,
                           std::size_t max_depth) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw invalid_argument(argument, origin, text.empty() ? "is empty: it must hold a JSON document"
-                                                          : "holds only white space: it must hold a JSON document");
+    throw invalid_argument(argument, origin,
+                           text.empty() ? "is empty: it must hold a JSON document"
+                                        : "holds only white space: it must hold a JSON document");
   const std::size_t deep = too_deep(text, max_depth);
   if (deep != std::string::npos)
-    throw invalid_argument(argument, origin,
-                           "nests arrays and objects deeper than " + std::to_string(max_depth) + " levels at " +
-                               place(text, deep));
+    throw invalid_argument(
+        argument, origin,
+        "nests arrays and objects deeper than " + std::to_string(max_depth) + " levels at " + place(text, deep));
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {

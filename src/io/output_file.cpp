@@ -87,7 +87,6 @@ long staging_pid(const std::string& name) {
   return end != digits && *end == '-' && pid > 0 ? pid : 0;
 }
 
-
 /// The file a path names after following symbolic links (the last one may dangle).
 fs::path follow_links(const fs::path& path) {
   fs::path p = path;
@@ -172,7 +171,8 @@ int write_through(int fd, const std::function<void(std::ostream&)>& body) {
 
 }  // namespace
 
-OutputFile::OutputFile(std::string argument, std::string path) : argument_(std::move(argument)), path_(std::move(path)) {}
+OutputFile::OutputFile(std::string argument, std::string path)
+    : argument_(std::move(argument)), path_(std::move(path)) {}
 
 OutputFile::~OutputFile() { discard(); }
 
@@ -212,8 +212,9 @@ void OutputFile::prepare() {
   } else if (errno != ENOENT) {
     fail("cannot be examined (" + os_error(errno) + ")");
   }
-  const fs::path folder = special_ ? fs::temp_directory_path()
-                          : target_.has_parent_path() ? target_.parent_path() : fs::path(".");
+  const fs::path folder = special_                    ? fs::temp_directory_path()
+                          : target_.has_parent_path() ? target_.parent_path()
+                                                      : fs::path(".");
   std::error_code error;
   if (!fs::is_directory(folder, error)) fail("needs the folder " + folder.string() + ", which does not exist");
   remove_stale_staging(folder);
@@ -223,7 +224,8 @@ void OutputFile::prepare() {
          target_.extension().string();
   const std::string staging = (folder / name).string();
   const int fd = ::open(staging.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, existed_ ? 0600 : 0666);
-  if (fd < 0) fail("cannot be written: its folder " + folder.string() + " refuses a new file (" + os_error(errno) + ")");
+  if (fd < 0)
+    fail("cannot be written: its folder " + folder.string() + " refuses a new file (" + os_error(errno) + ")");
   if (existed_) {
     // The replaced file's owner (where this user may give it) and bits, not the umask's.
     // (Not root: the new file is this user's, as after any editor's rewrite.)
@@ -352,11 +354,12 @@ void OutputGroup::prepare() {
       if (files_[i]->inactive_) continue;  // another rank's outputs: rank 0 checks them
       for (std::size_t j = 0; j < i; ++j) {
         const OutputFile &a = *files_[j], &b = *files_[i];
-        const bool same_inode = (a.existed_ || a.special_) && (b.existed_ || b.special_) && a.device_ == b.device_ &&
-                                a.inode_ == b.inode_;
+        const bool same_inode =
+            (a.existed_ || a.special_) && (b.existed_ || b.special_) && a.device_ == b.device_ && a.inode_ == b.inode_;
         if (same_inode || key(a) == key(b))
-          throw invalid_argument(b.argument_, b.path_,
-                                 "names the same file as --" + a.argument_ + " (" + a.path_ + "): give each output its own file");
+          throw invalid_argument(
+              b.argument_, b.path_,
+              "names the same file as --" + a.argument_ + " (" + a.path_ + "): give each output its own file");
       }
     }
   } catch (...) {
@@ -396,11 +399,12 @@ void remove_stale_staging(const fs::path& folder) {
 fs::path make_staging_folder(const fs::path& folder, const std::string& name) {
   remove_stale_staging(folder);
   for (int attempt = 0; attempt < 1000; ++attempt) {
-    const fs::path path = folder / ("." + name + staging_marker + std::to_string(::getpid()) + "-" +
-                                    std::to_string(staging_counter++));
+    const fs::path path =
+        folder / ("." + name + staging_marker + std::to_string(::getpid()) + "-" + std::to_string(staging_counter++));
     if (::mkdir(path.c_str(), 0777) == 0) return path;
     if (errno != EEXIST)
-      throw invalid_argument("directory", folder.string(), "must be a folder this user can write to (" + os_error(errno) + ")");
+      throw invalid_argument("directory", folder.string(),
+                             "must be a folder this user can write to (" + os_error(errno) + ")");
   }
   throw invalid_argument("directory", folder.string(), "has no room for a staging folder");
 }
@@ -427,7 +431,7 @@ StopOnInterrupt::~StopOnInterrupt() { stop_scopes.fetch_sub(1); }
 
 void write_stdout(const std::function<void(std::ostream&)>& body) {
   if (!distributed::is_root()) return;  // rank 0 alone prints (the others' stdout is a sink)
-  check_stdout();  // what went before, in order
+  check_stdout();                       // what went before, in order
   const int error = write_through(STDOUT_FILENO, body);
   if (error) throw std::runtime_error("stdout: output was lost (" + os_error(error) + ")");
 }
@@ -468,8 +472,9 @@ std::string read_regular_file(const std::string& argument, const std::string& pa
   std::error_code error;
   const std::uint64_t size = fs::file_size(path, error);
   if (!error && size > max_bytes)
-    throw invalid_argument(argument, path,
-                           "is " + std::to_string(size) + " bytes, more than the " + std::to_string(max_bytes) + " allowed");
+    throw invalid_argument(
+        argument, path,
+        "is " + std::to_string(size) + " bytes, more than the " + std::to_string(max_bytes) + " allowed");
   std::string text;
   text.resize(static_cast<std::size_t>(error ? 0 : size));
   in.read(text.data(), static_cast<std::streamsize>(text.size()));

@@ -21,7 +21,8 @@ PointFormat parse_point_format(const std::string& text) {
 }
 
 static void write_npy(std::ostream& out, const PointSet& points) {
-  std::string header = fmt::format("{{'descr': '<f8', 'fortran_order': False, 'shape': ({}, {}), }}", points.n, points.d);
+  std::string header =
+      fmt::format("{{'descr': '<f8', 'fortran_order': False, 'shape': ({}, {}), }}", points.n, points.d);
   // Magic (6) + version (2) + length (2) + header + newline, padded to 64 bytes.
   const std::size_t unpadded = 10 + header.size() + 1;
   header.append((64 - unpadded % 64) % 64, ' ');
@@ -53,9 +54,15 @@ static void write_text(std::ostream& out, const PointSet& points, char separator
 
 void write_points(std::ostream& out, const PointSet& points, PointFormat format) {
   switch (format) {
-    case PointFormat::npy: write_npy(out, points); break;
-    case PointFormat::csv: write_text(out, points, ','); break;
-    case PointFormat::txt: write_text(out, points, ' '); break;
+    case PointFormat::npy:
+      write_npy(out, points);
+      break;
+    case PointFormat::csv:
+      write_text(out, points, ',');
+      break;
+    case PointFormat::txt:
+      write_text(out, points, ' ');
+      break;
   }
 }
 
@@ -69,9 +76,12 @@ std::optional<PointFormat> point_format_of_extension(const std::filesystem::path
 
 static const char* format_name(PointFormat format) {
   switch (format) {
-    case PointFormat::npy: return "npy";
-    case PointFormat::csv: return "csv";
-    case PointFormat::txt: break;
+    case PointFormat::npy:
+      return "npy";
+    case PointFormat::csv:
+      return "csv";
+    case PointFormat::txt:
+      break;
   }
   return "txt";
 }
@@ -161,7 +171,8 @@ PointSet read_points_file(const std::filesystem::path& path) {
     if (count == 0) continue;
     if (d == 0) d = count;
     if (count != d)
-      throw invalid_argument("input", path.string(), fmt::format("line {} has {} values, expected {}", n + 1, count, d));
+      throw invalid_argument("input", path.string(),
+                             fmt::format("line {} has {} values, expected {}", n + 1, count, d));
     ++n;
   }
   if (n == 0) throw invalid_argument("input", path.string(), "holds no points");

@@ -196,7 +196,9 @@ void write_plots(const std::vector<PlotJob>& jobs, unsigned processes) {
   for (unsigned p = 0; p < processes; ++p) {
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t i = p; i < staged.size(); i += processes)
-      list.push_back({{"script", staged[i]->code.path}, {"data", staged[i]->json.path}, {"out", staged[i]->figure->staging()},
+      list.push_back({{"script", staged[i]->code.path},
+                      {"data", staged[i]->json.path},
+                      {"out", staged[i]->figure->staging()},
                       {"target", staged[i]->target}});
     lists[p].path = make_temporary(temp_dir + "/stratum-plot-", ".json");
     if (lists[p].path.empty()) throw std::runtime_error("plot: cannot create temporary files in " + temp_dir);

@@ -13,10 +13,10 @@ extern const std::size_t blue_noise_default_table_size;
 }  // namespace embedded
 
 const BlueNoiseTable& default_blue_noise_table() {
-  static const BlueNoiseTable table = parse_blue_noise_table(
-      std::string_view(reinterpret_cast<const char*>(embedded::blue_noise_default_table),
-                       embedded::blue_noise_default_table_size),
-      "data/blue-noise/sobol-bn-default.bin");
+  static const BlueNoiseTable table =
+      parse_blue_noise_table(std::string_view(reinterpret_cast<const char*>(embedded::blue_noise_default_table),
+                                              embedded::blue_noise_default_table_size),
+                             "data/blue-noise/sobol-bn-default.bin");
   return table;
 }
 

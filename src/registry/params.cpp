@@ -11,45 +11,74 @@ namespace stratum {
 
 namespace params {
 Param integer(std::string name, std::string description, std::string default_value, Range range) {
-  return {.name = std::move(name), .type = ParamType::integer, .description = std::move(description),
-          .default_value = std::move(default_value), .range = range};
+  return {.name = std::move(name),
+          .type = ParamType::integer,
+          .description = std::move(description),
+          .default_value = std::move(default_value),
+          .range = range};
 }
 Param real(std::string name, std::string description, std::string default_value, Range range) {
-  return {.name = std::move(name), .type = ParamType::real, .description = std::move(description),
-          .default_value = std::move(default_value), .range = range};
+  return {.name = std::move(name),
+          .type = ParamType::real,
+          .description = std::move(description),
+          .default_value = std::move(default_value),
+          .range = range};
 }
 Param integers(std::string name, std::string description, std::string default_value, Range range, Length length,
                char separator) {
-  return {.name = std::move(name), .type = ParamType::integers, .description = std::move(description),
-          .default_value = std::move(default_value), .range = range, .length = length, .separator = separator};
+  return {.name = std::move(name),
+          .type = ParamType::integers,
+          .description = std::move(description),
+          .default_value = std::move(default_value),
+          .range = range,
+          .length = length,
+          .separator = separator};
 }
 Param reals(std::string name, std::string description, std::string default_value, Range range, Length length) {
-  return {.name = std::move(name), .type = ParamType::reals, .description = std::move(description),
-          .default_value = std::move(default_value), .range = range, .length = length};
+  return {.name = std::move(name),
+          .type = ParamType::reals,
+          .description = std::move(description),
+          .default_value = std::move(default_value),
+          .range = range,
+          .length = length};
 }
 Param choice(std::string name, std::string description, std::string default_value, std::vector<std::string> choices) {
-  return {.name = std::move(name), .type = ParamType::choice, .description = std::move(description),
-          .default_value = std::move(default_value), .choices = std::move(choices)};
+  return {.name = std::move(name),
+          .type = ParamType::choice,
+          .description = std::move(description),
+          .default_value = std::move(default_value),
+          .choices = std::move(choices)};
 }
 Param flag(std::string name, std::string description, std::string default_value) {
-  return {.name = std::move(name), .type = ParamType::flag, .description = std::move(description),
+  return {.name = std::move(name),
+          .type = ParamType::flag,
+          .description = std::move(description),
           .default_value = std::move(default_value)};
 }
 Param text(std::string name, std::string description, std::string default_value) {
-  return {.name = std::move(name), .type = ParamType::text, .description = std::move(description),
+  return {.name = std::move(name),
+          .type = ParamType::text,
+          .description = std::move(description),
           .default_value = std::move(default_value)};
 }
 }  // namespace params
 
 std::string_view type_name(ParamType type) {
   switch (type) {
-    case ParamType::integer: return "integer";
-    case ParamType::real: return "real";
-    case ParamType::integers: return "integers";
-    case ParamType::reals: return "reals";
-    case ParamType::choice: return "choice";
-    case ParamType::flag: return "flag";
-    case ParamType::text: return "text";
+    case ParamType::integer:
+      return "integer";
+    case ParamType::real:
+      return "real";
+    case ParamType::integers:
+      return "integers";
+    case ParamType::reals:
+      return "reals";
+    case ParamType::choice:
+      return "choice";
+    case ParamType::flag:
+      return "flag";
+    case ParamType::text:
+      return "text";
   }
   return "text";
 }
@@ -68,7 +97,8 @@ static std::string bound_text(double value) {
 std::string range_text(const Range& range) {
   if (!range.bounded()) return "";
   const bool open_min = range.min_open || std::isinf(range.min), open_max = range.max_open || std::isinf(range.max);
-  return std::string(open_min ? "(" : "[") + bound_text(range.min) + ", " + bound_text(range.max) + (open_max ? ")" : "]");
+  return std::string(open_min ? "(" : "[") + bound_text(range.min) + ", " + bound_text(range.max) +
+         (open_max ? ")" : "]");
 }
 
 static std::string join(const std::vector<std::string>& items, std::string_view separator = ", ") {
@@ -90,16 +120,21 @@ static std::string length_text(const Length& length) {
 
 std::string allowed_values(const Param& param) {
   switch (param.type) {
-    case ParamType::integer: return "must be an integer" + in_range(param.range);
-    case ParamType::real: return "must be a finite real" + in_range(param.range);
+    case ParamType::integer:
+      return "must be an integer" + in_range(param.range);
+    case ParamType::real:
+      return "must be a finite real" + in_range(param.range);
     case ParamType::integers:
     case ParamType::reals:
       return "must be " + length_text(param.length) +
              (param.type == ParamType::integers ? " integers" : " finite reals") + in_range(param.range) +
              ", separated by '" + std::string(1, param.separator) + "'" + (param.separator == ',' ? "" : " or ','");
-    case ParamType::choice: return "must be one of " + join(param.choices);
-    case ParamType::flag: return "must be a flag: 1/0, true/false, yes/no or on/off";
-    case ParamType::text: return "must be text";
+    case ParamType::choice:
+      return "must be one of " + join(param.choices);
+    case ParamType::flag:
+      return "must be a flag: 1/0, true/false, yes/no or on/off";
+    case ParamType::text:
+      return "must be text";
   }
   return "";
 }
@@ -165,8 +200,9 @@ static bool underflows(std::string_view text) {
 }
 
 [[noreturn]] static void refuse_underflow(const std::string& name, std::string_view text) {
-  throw invalid_argument(name, text, "is below the smallest normal double, 2.2e-308, so it would not read back as "
-                                     "written: give 0 or a larger value");
+  throw invalid_argument(name, text,
+                         "is below the smallest normal double, 2.2e-308, so it would not read back as "
+                         "written: give 0 or a larger value");
 }
 
 /// Items between separators; a list whose separator is not ',' takes ','
@@ -238,7 +274,8 @@ ParamValue parse_param(const Param& param, std::string_view text) {
       if (lower == "0" || lower == "false" || lower == "no" || lower == "off") return false;
       refuse(param, text);
     }
-    case ParamType::text: return std::string(text);
+    case ParamType::text:
+      return std::string(text);
   }
   refuse(param, text);
 }
@@ -277,7 +314,8 @@ const Param* find_param(const std::vector<Param>& schema, std::string_view name)
 
 const ParamValue& ParamValues::at(const std::string& name) const {
   const auto it = values_.find(name);
-  if (it == values_.end()) throw std::logic_error("parameter '" + name + "' is not bound (not in the schema, or no default)");
+  if (it == values_.end())
+    throw std::logic_error("parameter '" + name + "' is not bound (not in the schema, or no default)");
   return it->second;
 }
 

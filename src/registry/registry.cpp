@@ -62,19 +62,19 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
     require(sampler.n_optional && request.radius, "n", "(none)",
             sampler.n_optional ? "give n, or radius for a maximal set" : "n is required for " + sampler.name);
   if (request.n) require(*request.n >= 1, "n", *request.n, "must be a positive integer (" + sampler.counts + ")");
-  require(request.d >= sampler.min_dim && request.d <= sampler.max_dim, "d", request.d,
-          sampler.name + " supports d from " + std::to_string(sampler.min_dim) + " to " +
-              std::to_string(sampler.max_dim));
+  require(
+      request.d >= sampler.min_dim && request.d <= sampler.max_dim, "d", request.d,
+      sampler.name + " supports d from " + std::to_string(sampler.min_dim) + " to " + std::to_string(sampler.max_dim));
   require(request.threads >= 1 && request.threads <= 1024, "threads", request.threads, "must be in [1, 1024]");
   if (request.radius)
     require(*request.radius > 0 && *request.radius <= 1, "radius", *request.radius, "must be in (0, 1]");
   if (request.start != 0)
-    require(sampler.kind == "sequence" ||
-                std::find(sampler.properties.begin(), sampler.properties.end(), "progressive") !=
-                    sampler.properties.end(),
+    require(sampler.kind == "sequence" || std::find(sampler.properties.begin(), sampler.properties.end(),
+                                                    "progressive") != sampler.properties.end(),
             "start", request.start,
-            sampler.name + " is a finite pattern; only sequences and progressive samplers (random) can start past "
-                           "index 0");
+            sampler.name +
+                " is a finite pattern; only sequences and progressive samplers (random) can start past "
+                "index 0");
   if (request.n)
     require(request.start <= ~std::uint64_t{0} - *request.n, "start", request.start, "start + n must fit in 64 bits");
   const std::string randomize = request.randomize.empty() ? sampler.randomizers.front() : request.randomize;

@@ -21,7 +21,6 @@ using namespace registry_support;
 
 namespace {
 
-
 /// Korobov search limit: n x d point-coordinates per candidate.
 constexpr std::uint64_t search_limit = std::uint64_t{1} << 26;
 
@@ -195,7 +194,8 @@ std::vector<SamplerInfo> lattices() {
           [](const SamplerRequest& request) {
             const std::uint64_t n = *request.n;
             auto z = explicit_generator(request);
-            if (!z) z = korobov_generator(n, search_korobov(n, request.d, param_gamma(request), request.threads), request.d);
+            if (!z)
+              z = korobov_generator(n, search_korobov(n, request.d, param_gamma(request), request.threads), request.d);
             const Rank1Lattice lattice(n, std::span<const std::uint64_t>(z->data(), request.d));
             return fill_lattice(lattice, request);
           },

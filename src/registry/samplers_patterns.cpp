@@ -21,7 +21,6 @@ namespace stratum::registry_families {
 
 using namespace registry_support;
 
-
 /// strata= as counts per dimension ("4x8" → {4, 8}).
 static std::vector<std::uint64_t> strata_param(const SamplerRequest& request) {
   const auto& parts = request.values.integers("strata");
@@ -68,9 +67,8 @@ static LatinSquare latin_square_of(const SamplerRequest& request) {
   constexpr std::uint64_t max_moves = std::uint64_t{1} << 28;
   if (kind == LatinSquare::Method::jacobson_matthews)
     require(steps <= max_moves / m, "steps", steps,
-            "Jacobson-Matthews takes at most 2^28 / m = " + std::to_string(max_moves / m) +
-                " proper moves here (m = " + std::to_string(m) +
-                ", default m^2); use method=permuted-cyclic or a smaller steps= for large squares");
+            "Jacobson-Matthews takes at most 2^28 / m = " + std::to_string(max_moves / m) + " proper moves here (m = " +
+                std::to_string(m) + ", default m^2); use method=permuted-cyclic or a smaller steps= for large squares");
   return LatinSquare(m, request.seed, kind, steps);
 }
 
@@ -81,8 +79,7 @@ static MultiJittered multi_jittered_of(const SamplerRequest& request) {
   if (const auto text = param_text(request, "strata")) {
     const auto parts = strata_param(request);
     require(parts.size() == 2, "strata", *text, "multi-jittered needs columns x rows, e.g. strata=4x8");
-    require(n % parts[0] == 0 && n / parts[0] == parts[1], "n", n,
-            "must equal the product of strata=" + *text);
+    require(n % parts[0] == 0 && n / parts[0] == parts[1], "n", n, "must equal the product of strata=" + *text);
     return MultiJittered(parts[0], parts[1], request.seed);
   }
   return MultiJittered::closest_to_square(n, request.seed);
@@ -119,14 +116,14 @@ static void fill_latin_hypercube(const LatinHypercube& lhs, const SamplerRequest
       Index* column = cells.data() + std::size_t{b} * n;
       if constexpr (sizeof(Index) == sizeof(std::uint32_t))
         bulk_random_permutation(column, n, lhs.permutation_key(first + b));
-      else
-        lhs.permutation(first + b, column);
+      else lhs.permutation(first + b, column);
     }
     parallel_rows(n, request.threads, [&](std::uint64_t begin, std::uint64_t end) {
       for (std::uint64_t i = begin; i < end; ++i) {
         const std::uint64_t key = lhs.row_key(i);
         double* row = out + i * d + first;
-        for (unsigned b = 0; b < width; ++b) row[b] = lhs.coordinate_in_row(cells[std::size_t{b} * n + i], key, first + b);
+        for (unsigned b = 0; b < width; ++b)
+          row[b] = lhs.coordinate_in_row(cells[std::size_t{b} * n + i], key, first + b);
       }
     });
   }
@@ -135,10 +132,8 @@ static void fill_latin_hypercube(const LatinHypercube& lhs, const SamplerRequest
 static PointSet generate_latin_hypercube(const SamplerRequest& request) {
   const LatinHypercube lhs(*request.n, request.d, request.seed, request.values.flag("centered"));
   PointSet points = allocate_points(*request.n, request.d);
-  if (*request.n <= (std::uint64_t{1} << 32))
-    fill_latin_hypercube<std::uint32_t>(lhs, request, points.data.get());
-  else
-    fill_latin_hypercube<std::uint64_t>(lhs, request, points.data.get());
+  if (*request.n <= (std::uint64_t{1} << 32)) fill_latin_hypercube<std::uint32_t>(lhs, request, points.data.get());
+  else fill_latin_hypercube<std::uint64_t>(lhs, request, points.data.get());
   return points;
 }
 
@@ -184,8 +179,8 @@ std::vector<SamplerInfo> patterns() {
           },
   });
 
-  const Param strata_schema = params::integers("strata", "strata per dimension, e.g. 4x8 (product must equal n)", "",
-                                               at_least(1), {}, 'x');
+  const Param strata_schema =
+      params::integers("strata", "strata per dimension, e.g. 4x8 (product must equal n)", "", at_least(1), {}, 'x');
   const std::string strata_counts = "n = k^d (a perfect d-th power), or any n with strata=n1x...xnd of product n";
 
   list.push_back({
@@ -225,7 +220,8 @@ std::vector<SamplerInfo> patterns() {
       "n-rooks",
       "N-rooks / Latin hypercube: one random permutation per dimension (McKay, Beckman, Conover 1979; Shirley 1991)"));
   list.push_back(latin_hypercube_entry(
-      "latin-hypercube", "alias of n-rooks (same points for the same request): Latin hypercube sampling (McKay et al. 1979)"));
+      "latin-hypercube",
+      "alias of n-rooks (same points for the same request): Latin hypercube sampling (McKay et al. 1979)"));
 
   list.push_back({
       .name = "multi-jittered",
@@ -236,8 +232,10 @@ std::vector<SamplerInfo> patterns() {
       .properties = {"Latin in x and y", "one point per m x k stratum", "unbiased"},
       .randomizers = {"none"},
       .counts = "any n >= 1 (m x k with m <= k closest to sqrt(n); m = 1 for prime n), or strata=mxk of product n",
-      .params = {params::integers("strata", "columns x rows, e.g. 4x8 (product must equal n); default: closest to "
-                                  "square", "", at_least(1), {2, 2}, 'x')},
+      .params = {params::integers("strata",
+                                  "columns x rows, e.g. 4x8 (product must equal n); default: closest to "
+                                  "square",
+                                  "", at_least(1), {2, 2}, 'x')},
       .validate = [](const SamplerRequest& request) { multi_jittered_of(request); },
       .count = requested_count,
       .generate =
@@ -263,8 +261,9 @@ std::vector<SamplerInfo> patterns() {
       .description = "correlated multi-jittered, index-addressable with hashed permutations (Kensler 2013)",
       .min_dim = 2,
       .max_dim = 2,
-      .properties = {"Latin in y", "Latin in x and one point per m x k stratum when n = m*k (m = floor(sqrt(n*aspect)))",
-                     "unbiased", "index-addressable"},
+      .properties = {"Latin in y",
+                     "Latin in x and one point per m x k stratum when n = m*k (m = floor(sqrt(n*aspect)))", "unbiased",
+                     "index-addressable"},
       .randomizers = {"none"},
       .counts = "any n in [1, 2^32 - 1]; fully stratified when n = m * ceil(n/m), e.g. squares and m(m+1)",
       .params = {params::real("aspect", "columns / rows of the strata (Kensler's a)", "1", above(0))},
@@ -314,11 +313,15 @@ std::vector<SamplerInfo> patterns() {
       .properties = {"orthogonal array of strength 2 (each 2D projection one point per m x m cell)",
                      "Latin square (each symbol once per row and column)", "unbiased"},
       .randomizers = {"none"},
-      .counts = "n = m^2 (m <= 65535; jacobson-matthews by default needs m^3 <= 2^28, i.e. m <= 645; steps= can lower it)",
-      .params = {params::choice("method", "jacobson-matthews (uniform, MCMC) or permuted-cyclic (isotopes of Z_m, fast)",
+      .counts =
+          "n = m^2 (m <= 65535; jacobson-matthews by default needs m^3 <= 2^28, i.e. m <= 645; steps= can lower it)",
+      .params = {params::choice("method",
+                                "jacobson-matthews (uniform, MCMC) or permuted-cyclic (isotopes of Z_m, fast)",
                                 "jacobson-matthews", {"jacobson-matthews", "permuted-cyclic"}),
-                 params::integer("steps", "Jacobson-Matthews moves from proper squares (default m^2, about m^3 moves "
-                                 "in all)", "", at_least(0))},
+                 params::integer("steps",
+                                 "Jacobson-Matthews moves from proper squares (default m^2, about m^3 moves "
+                                 "in all)",
+                                 "", at_least(0))},
       .validate = [](const SamplerRequest& request) { latin_square_of(request); },
       .count = requested_count,
       .generate =

@@ -16,7 +16,6 @@ using namespace registry_support;
 
 namespace {
 
-
 unsigned candidates_param(const SamplerRequest& request) {
   return static_cast<unsigned>(request.values.integer("candidates"));
 }
@@ -33,7 +32,8 @@ void require_fits(const SamplerRequest& request, double radius, bool periodic, c
   const double bytes = PoissonDisk::working_bytes(request.d, radius, periodic);
   const double limit = static_cast<double>(max_coordinates()) * sizeof(double);
   const double estimate = PoissonDisk::estimated_count(request.d, radius, periodic);
-  require(bytes <= limit && estimate < 0x1.0p31, what, what == "radius" ? to_message_string(radius) : std::to_string(*request.n),
+  require(bytes <= limit && estimate < 0x1.0p31, what,
+          what == "radius" ? to_message_string(radius) : std::to_string(*request.n),
           "a maximal Poisson-disk set in d = " + std::to_string(request.d) + " at radius " + to_message_string(radius) +
               " has about " + to_message_string(std::round(estimate)) + " points and needs about " +
               to_message_string(std::round(bytes / 0x1.0p20)) + " MiB; the limit is " +
@@ -83,9 +83,10 @@ void validate_best_candidate(const SamplerRequest& request) {
   while (BestCandidate::candidate_count(largest, k) > budget) --largest;
   throw invalid_argument("n", std::to_string(*request.n),
                          "best-candidate evaluates candidates*n*(n-1)/2 = " + std::to_string(total) +
-                             " candidates (Mitchell's quadratic cost), more than the limit of 2^" + std::to_string(log2) +
-                             " in d = " + std::to_string(request.d) + "; with candidates=" + std::to_string(k) +
-                             " n must be at most " + std::to_string(largest) + " (a smaller candidates= allows more)");
+                             " candidates (Mitchell's quadratic cost), more than the limit of 2^" +
+                             std::to_string(log2) + " in d = " + std::to_string(request.d) +
+                             "; with candidates=" + std::to_string(k) + " n must be at most " +
+                             std::to_string(largest) + " (a smaller candidates= allows more)");
 }
 
 }  // namespace
@@ -96,7 +97,8 @@ std::vector<SamplerInfo> poisson() {
   list.push_back({
       .name = "poisson-disk",
       .kind = "pattern",
-      .description = "maximal Poisson-disk set: Bridson 2007 dart throwing, completed to maximal after Ebeida et al. 2012",
+      .description =
+          "maximal Poisson-disk set: Bridson 2007 dart throwing, completed to maximal after Ebeida et al. 2012",
       .min_dim = 1,
       .max_dim = PoissonDisk::max_dimensions,
       .properties = {"blue noise", "minimum distance >= radius", "maximal (radius alone)"},
@@ -127,14 +129,15 @@ std::vector<SamplerInfo> poisson() {
       .params = {params::integer("candidates", "Mitchell's multiplier k: point i is the best of k*i candidates",
                                  std::to_string(BestCandidate::default_candidates),
                                  closed(1, BestCandidate::max_candidates)),
-                 params::flag("periodic", "1: toroidal distances, as Mitchell (the pattern tiles the plane); 0: "
-                              "Euclidean", "1")},
+                 params::flag("periodic",
+                              "1: toroidal distances, as Mitchell (the pattern tiles the plane); 0: "
+                              "Euclidean",
+                              "1")},
       .validate = validate_best_candidate,
       .count = requested_count,
       .generate =
           [](const SamplerRequest& request) {
-            const unsigned k =
-                candidates_param(request);
+            const unsigned k = candidates_param(request);
             const BestCandidate pattern(request.d, request.seed, k, request.values.flag("periodic"));
             PointSet points = allocate_points(*request.n, request.d);
             pattern.generate(*request.n, points.data.get());

@@ -37,7 +37,6 @@ namespace stratum::registry_families {
 
 using namespace registry_support;
 
-
 /// The first `count` primes: Halton's bases.
 static std::vector<std::uint32_t> prime_bases(unsigned count) {
   std::vector<std::uint32_t> bases(count);
@@ -214,7 +213,8 @@ std::vector<SamplerInfo> sequences() {
                      "mixed-base elementary intervals (none, permute, owen, xor)"},
       .randomizers = radical_inverse_randomizers(),
       .counts = "any n >= 1",
-      .params = {params::integers("bases", "one radical-inverse base per dimension (default: the first d primes); "
+      .params = {params::integers("bases",
+                                  "one radical-inverse base per dimension (default: the first d primes); "
                                   "pairwise coprime bases give a low-discrepancy set, a repeated base a diagonal",
                                   "", closed(2, digits_detail::max_base), Length{1, Halton::max_dimensions})},
       .validate = validate_halton,

@@ -79,10 +79,10 @@ std::vector<std::uint64_t> transformed_columns(unsigned d, Transform transform) 
 /// group are then whole vectors for any d, d = 2, 3 or 5 included.
 struct Layout {
   unsigned d = 0;
-  unsigned log_block = 0;     // k ≥ 1
-  std::uint64_t block = 0;    // 2^k rows, a multiple of group_rows
-  std::size_t span = 0;       // words of a group: a multiple of lcm(d, 8), ≥ 64, for d ≤ 256; else d
-  unsigned group_rows = 0;    // span / d
+  unsigned log_block = 0;   // k ≥ 1
+  std::uint64_t block = 0;  // 2^k rows, a multiple of group_rows
+  std::size_t span = 0;     // words of a group: a multiple of lcm(d, 8), ≥ 64, for d ≤ 256; else d
+  unsigned group_rows = 0;  // span / d
 };
 
 Layout layout_for(unsigned d) {
@@ -128,21 +128,24 @@ std::vector<T> tiled(const std::vector<T>& per_dimension, std::size_t span) {
 /// into output coordinates. Each table has `span` entries, tiled.
 struct Finish {
   enum Kind { plain, owen_hash, rotate, owen } kind = plain;
-  const std::uint64_t* addend = nullptr;               // owen_hash
-  const std::uint64_t* multiplier = nullptr;           // owen_hash
-  const double* shift = nullptr;                       // rotate: Cranley-Patterson shifts
+  const std::uint64_t* addend = nullptr;                // owen_hash
+  const std::uint64_t* multiplier = nullptr;            // owen_hash
+  const double* shift = nullptr;                        // rotate: Cranley-Patterson shifts
   const OwenScrambler::Dimension* owen_dims = nullptr;  // owen (exact)
-  std::uint64_t mask = ~std::uint64_t{0};              // digits kept (bits); plain: in the columns already
-  double truncation = 0;                               // rotate with bits < 53: 2^bits, else 0
+  std::uint64_t mask = ~std::uint64_t{0};               // digits kept (bits); plain: in the columns already
+  double truncation = 0;                                // rotate with bits < 53: 2^bits, else 0
 
   /// The output for state x of tile entry t.
   double operator()(std::uint64_t x, std::size_t t) const noexcept {
     switch (kind) {
-      case plain: return bits_to_double(x);
+      case plain:
+        return bits_to_double(x);
       case owen_hash:
         return bits_to_double(reverse_bits64(HashOwenScrambler::scramble_reversed(x, addend[t], multiplier[t])) & mask);
-      case rotate: return truncated(rotated(x, shift[t]));
-      case owen: return bits_to_double(owen_dims[t](x) & mask);
+      case rotate:
+        return truncated(rotated(x, shift[t]));
+      case owen:
+        return bits_to_double(owen_dims[t](x) & mask);
     }
     return 0;
   }
@@ -264,7 +267,8 @@ void block_rows(const Tables& tables, const Finish& finish, const std::uint64_t*
       for (unsigned j = 0; j < d; ++j) out[q * d + j] = finish(tile[j] ^ low[q * d + j], j);
   };
   // Rows before the first whole group and after the last one go one by one.
-  const std::uint64_t lead = std::min<std::uint64_t>(count, (layout.group_rows - r0 % layout.group_rows) % layout.group_rows);
+  const std::uint64_t lead =
+      std::min<std::uint64_t>(count, (layout.group_rows - r0 % layout.group_rows) % layout.group_rows);
   const std::uint64_t groups = (count - lead) / layout.group_rows;
   scalar_rows(0, lead);
   if (groups != 0) {
@@ -374,7 +378,9 @@ PointSet generate_sobol(const SamplerRequest& request) {
     const auto addend_tiles = tiled(addends, layout.span), multiplier_tiles = tiled(multipliers, layout.span);
     const auto reversed = [](unsigned, std::uint64_t word) { return reverse_bits64(word); };
     return walk(request, order, transformed_columns(d, reversed), zeros,
-                Finish{.kind = Finish::owen_hash, .addend = addend_tiles.data(), .multiplier = multiplier_tiles.data(),
+                Finish{.kind = Finish::owen_hash,
+                       .addend = addend_tiles.data(),
+                       .multiplier = multiplier_tiles.data(),
                        .mask = mask},
                 layout);
   }
@@ -385,9 +391,10 @@ PointSet generate_sobol(const SamplerRequest& request) {
     const auto tiles = tiled(shifts, layout.span);
     const int bits = 64 - std::countr_zero(mask);
     const auto unmasked = [](unsigned, std::uint64_t word) { return word; };
-    return walk(request, order, transformed_columns(d, unmasked), zeros,
-                Finish{.kind = Finish::rotate, .shift = tiles.data(), .truncation = bits < 53 ? std::ldexp(1.0, bits) : 0},
-                layout);
+    return walk(
+        request, order, transformed_columns(d, unmasked), zeros,
+        Finish{.kind = Finish::rotate, .shift = tiles.data(), .truncation = bits < 53 ? std::ldexp(1.0, bits) : 0},
+        layout);
   }
   if (randomize == "owen") {  // 64 hashes per coordinate: scalar
     const OwenScrambler owen(request.seed);
@@ -423,8 +430,8 @@ ZSobolPixel zsobol_from(const SamplerRequest& request) {
   for (std::int64_t c : pixel)
     require(c >= 0 && c < resolution, "pixel", std::to_string(pixel[0]) + "," + std::to_string(pixel[1]),
             "must lie in the image: coordinates in [0, resolution = " + std::to_string(resolution) + ")");
-  return {ZSobol(static_cast<std::uint32_t>(resolution), *request.n, request.seed), static_cast<std::uint32_t>(pixel[0]),
-          static_cast<std::uint32_t>(pixel[1])};
+  return {ZSobol(static_cast<std::uint32_t>(resolution), *request.n, request.seed),
+          static_cast<std::uint32_t>(pixel[0]), static_cast<std::uint32_t>(pixel[1])};
 }
 
 PointSet generate_zsobol(const SamplerRequest& request) {
@@ -462,9 +469,8 @@ PointSet generate_sobol_bn(const SamplerRequest& request) {
   const SobolBn sampler(*table, *request.n, request.seed);
   std::vector<SobolBn::PixelPair> pairs;
   for (unsigned p = 0; p < (request.d + 1) / 2; ++p) pairs.push_back(sampler.pixel_pair(x, y, p));
-  return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
-    return sampler.point(i, pairs[j / 2])[j % 2];
-  });
+  return fill_index_addressable(*request.n, request.d, request.threads,
+                                [&](std::uint64_t i, unsigned j) { return sampler.point(i, pairs[j / 2])[j % 2]; });
 }
 
 }  // namespace
@@ -512,11 +518,12 @@ std::vector<SamplerInfo> sobol() {
   list.push_back({
       .name = "sobol-bn",
       .kind = "pattern",
-      .description = "the spp samples of one pixel of a blue-noise-error image sampler (after Heitz et al. 2019, "
-                     "Belcour & Heitz 2021): one Owen-scrambled Sobol' sequence per dimension pair shared by the image, "
-                     "each pixel taking the block of spp points its rank in an optimized tile names (stratum optimize "
-                     "blue-noise; after the tile's dimensions, per-pixel Owen scrambles); render --sampler sobol-bn "
-                     "uses it per pixel",
+      .description =
+          "the spp samples of one pixel of a blue-noise-error image sampler (after Heitz et al. 2019, "
+          "Belcour & Heitz 2021): one Owen-scrambled Sobol' sequence per dimension pair shared by the image, "
+          "each pixel taking the block of spp points its rank in an optimized tile names (stratum optimize "
+          "blue-noise; after the tile's dimensions, per-pixel Owen scrambles); render --sampler sobol-bn "
+          "uses it per pixel",
       .min_dim = 1,
       .max_dim = 64,
       .properties = {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
@@ -524,8 +531,8 @@ std::vector<SamplerInfo> sobol() {
       .randomizers = {"owen-hash"},
       .counts = "n = spp, 1 to 2^24 (powers of two give (0,m,2)-nets per pair)",
       .params = {params::integers("pixel", "the pixel x,y whose samples these are", "0,0", at_least(0), {2, 2}),
-                 params::text("table", "a rank tile written by stratum optimize blue-noise (default: the committed tile)",
-                              "")},
+                 params::text("table",
+                              "a rank tile written by stratum optimize blue-noise (default: the committed tile)", "")},
       .validate =
           [](const SamplerRequest& request) {
             const auto table = sobol_bn_table(request);

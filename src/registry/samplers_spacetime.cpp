@@ -18,7 +18,6 @@ using namespace registry_support;
 
 namespace {
 
-
 // m with m² = n, or 0 when n is not a perfect square (or too large).
 std::uint32_t square_root(std::uint64_t n) {
   auto m = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(n)));
@@ -60,8 +59,9 @@ SamplerInfo spacetime_entry(std::string name, std::string description, std::vect
 
 std::vector<SamplerInfo> spacetime() {
   std::vector<SamplerInfo> list;
-  const std::string layout = " (x, y) jittered in stratum (row, column), t jittered in the stratum's slot "
-                             "[k/m^2, (k+1)/m^2); row r is y in [r/m, (r+1)/m)";
+  const std::string layout =
+      " (x, y) jittered in stratum (row, column), t jittered in the stratum's slot "
+      "[k/m^2, (k+1)/m^2); row r is y in [r/m, (r+1)/m)";
 
   list.push_back(spacetime_entry(
       "spacetime-random", "space-time pattern, time slots a seeded random permutation of the m^2 strata" + layout,
@@ -72,7 +72,8 @@ std::vector<SamplerInfo> spacetime() {
   list.push_back(spacetime_entry(
       "spacetime-cook",
       "space-time pattern with Cook's slot table (the lecture's 4x4 for m = 4; for other m a fixed random table "
-      "whose edge-adjacent strata differ by >= m slots)" + layout,
+      "whose edge-adjacent strata differ by >= m slots)" +
+          layout,
       {"stratified in (x, y)", "stratified in t", "edge neighbours far apart in time"}, "n = m^2 (1, 4, 9, 16, ...)",
       [](const SamplerRequest& request) { require_square(request, "spacetime-cook"); },
       [](std::uint32_t m, std::uint64_t) { return cook_slots(m); }));

@@ -32,8 +32,7 @@ std::string shown(std::string_view text) { return text.empty() ? std::string("''
 std::string at(std::size_t index) { return "at position " + std::to_string(index + 1); }
 
 bool name_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
-         c == '.';
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
 }
 
 /// Checks that text[begin, end) is a NAME (letters, digits, '-', '_', '.').
@@ -68,8 +67,7 @@ Located parse_located(std::string_view text) {
     if (close == std::string_view::npos)
       refuse(text, "unbalanced parentheses: '(' " + at(open) + " is never closed; " + std::string(grammar));
     if (close == open + 1)
-      refuse(text, "empty parameter list " + at(open) +
-                       "; leave out the parentheses or write (KEY=VALUE,...)");
+      refuse(text, "empty parameter list " + at(open) + "; leave out the parentheses or write (KEY=VALUE,...)");
     // Items split on the commas at depth 0 inside the parentheses; an item
     // without '=' continues the previous value (vector values).
     std::string last_key;
@@ -119,8 +117,7 @@ Located parse_located(std::string_view text) {
     while (end < text.size() && text[end] != '(' && text[end] != ')') ++end;
     if (begin == end && end == text.size())
       refuse(text, "empty randomizer after ':' " + at(i) + "; " + std::string(grammar));
-    if (end < text.size() && text[end] == ')')
-      refuse(text, "unbalanced parentheses: ')' " + at(end) + " has no '('");
+    if (end < text.size() && text[end] == ')') refuse(text, "unbalanced parentheses: ')' " + at(end) + " has no '('");
     if (end < text.size())
       refuse(text, "unexpected '(' " + at(end) + " in the randomizer; parameters come before ':', " +
                        "as in lattice(generator=1,55,133):cp");
@@ -301,8 +298,8 @@ SamplerSpec combine_sampler_options(std::string_view text, const std::vector<std
                              "conflicts with " + key + "=" + spec.params.at(key) + " in the sampler spec " +
                                  std::string(text) + "; give each parameter once");
     if (given.count(key))
-      throw invalid_argument("param", item, "conflicts with -p " + key + "=" + given.at(key) +
-                                                "; give each parameter once");
+      throw invalid_argument("param", item,
+                             "conflicts with -p " + key + "=" + given.at(key) + "; give each parameter once");
     if (!has_param(sampler, key)) throw invalid_argument("param", item, takes(sampler));
     given[key] = value;
   }
@@ -323,7 +320,8 @@ SamplerSpec combine_sampler_options(std::string_view text, const std::vector<std
 std::uint64_t parse_uint64(std::string_view argument, std::string_view text) {
   std::uint64_t value = 0;
   const char* end = text.data() + text.size();
-  const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  const bool digits =
+      !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
   const auto [ptr, error] = std::from_chars(text.data(), end, value);
   if (!digits || error != std::errc() || ptr != end)
     throw invalid_argument(argument, shown(text), "must be an integer in [0, 2^64) = [0, 18446744073709551615]");
@@ -343,7 +341,8 @@ unsigned resolve_threads(std::int64_t threads) {
     if (const char* text = std::getenv(name)) {
       unsigned local = 0;
       const char* end = text + std::strlen(text);
-      if (const auto [next, error] = std::from_chars(text, end, local); error == std::errc{} && next == end && local > 0)
+      if (const auto [next, error] = std::from_chars(text, end, local);
+          error == std::errc{} && next == end && local > 0)
         cores /= local;
       break;
     }

@@ -66,7 +66,8 @@ static void check_density(const WarpInfo& info, const WarpParams& given, const W
     for (unsigned k = 0; k < out; ++k) finite = finite && std::isfinite(p[i * out + k]);
     if (finite) continue;
     std::string given_text, point_text, u_text;
-    for (const auto& [key, value] : given) given_text += (given_text.empty() ? "" : " ") + key + "=" + numbers_text(value);
+    for (const auto& [key, value] : given)
+      given_text += (given_text.empty() ? "" : " ") + key + "=" + numbers_text(value);
     for (unsigned k = 0; k < out; ++k) point_text += (k ? ", " : "") + to_message_string(p[i * out + k]);
     for (unsigned k = 0; k < in; ++k) u_text += (k ? ", " : "") + to_message_string(u[i * in + k]);
     throw invalid_argument(given.empty() ? "map" : "warp-param", given.empty() ? info.name : given_text,

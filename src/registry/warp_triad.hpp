@@ -69,11 +69,17 @@ struct FunctionTriad {
   PdfFn pdf_fn;
   InvertFn invert_fn;
   template <class P>
-  auto sample(const P& u) const { return sample_fn(u); }
+  auto sample(const P& u) const {
+    return sample_fn(u);
+  }
   template <class P>
-  double pdf(const P& p) const { return pdf_fn(p); }
+  double pdf(const P& p) const {
+    return pdf_fn(p);
+  }
   template <class P>
-  auto invert(const P& p) const { return invert_fn(p); }
+  auto invert(const P& p) const {
+    return invert_fn(p);
+  }
 };
 template <class S, class P, class I>
 FunctionTriad<S, P, I> function_triad(S s, P p, I i) {

@@ -42,7 +42,8 @@ class AliasWarp final : public Warp {
   void invert(const double* p, std::size_t n, double* u) const override {
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t index = index_of(p[i]);
-      const double leftover = std::clamp(p[i] * static_cast<double>(table_.size()) - static_cast<double>(index), 0.0, 1.0);
+      const double leftover =
+          std::clamp(p[i] * static_cast<double>(table_.size()) - static_cast<double>(index), 0.0, 1.0);
       u[i] = table_.invert(index, clamp_to_unit(leftover));
     }
   }
@@ -71,7 +72,9 @@ std::vector<WarpInfo> warps_tabulated() {
   list.push_back({"piecewise-1d",
                   "density proportional to a tabulated function on width equal bins of [0,1] (pbrt-v4 "
                   "PiecewiseConstant1D), by CDF inversion",
-                  "interval", "length", false,
+                  "interval",
+                  "length",
+                  false,
                   {params::reals("values", "the function's values, not all zero", "", at_least(0)),
                    params::integer("width", "how many values (bins)", "", closed(1, 0x1p40))},
                   [](const WarpParams& p) -> std::unique_ptr<const Warp> {
@@ -84,7 +87,9 @@ std::vector<WarpInfo> warps_tabulated() {
   list.push_back({"piecewise-2d",
                   "density proportional to a tabulated function on a width x height grid of [0,1]^2 (e.g. an "
                   "environment map): marginal rows, then conditional columns (pbrt-v4 PiecewiseConstant2D)",
-                  "square", "area", false,
+                  "square",
+                  "area",
+                  false,
                   {params::reals("values", "height rows of width values, row-major; not all zero", "", at_least(0)),
                    params::integer("width", "values per row (x bins)", "", closed(1, 0x1p40)),
                    params::integer("height", "rows (y bins)", "", closed(1, 0x1p40))},
@@ -92,13 +97,15 @@ std::vector<WarpInfo> warps_tabulated() {
                     const std::size_t width = positive_integer(p, "width"), height = positive_integer(p, "height");
                     return make_triad<2, 2>(PiecewiseConstant2D<double>(p.at("values"), width, height));
                   }});
-  list.push_back({"alias",
-                  "alias method (Walker 1977, Vose 1991): index i of n weights with probability w_i / sum in O(1); "
-                  "returns x = (i + leftover)/n in [0,1), so i = floor(n x); pdf = pmf(i) n",
-                  "interval", "length", false, {params::reals("values", "the n weights, not all zero", "", at_least(0))},
-                  [](const WarpParams& p) -> std::unique_ptr<const Warp> {
-                    return std::make_unique<AliasWarp>(p.at("values"));
-                  }});
+  list.push_back(
+      {"alias",
+       "alias method (Walker 1977, Vose 1991): index i of n weights with probability w_i / sum in O(1); "
+       "returns x = (i + leftover)/n in [0,1), so i = floor(n x); pdf = pmf(i) n",
+       "interval",
+       "length",
+       false,
+       {params::reals("values", "the n weights, not all zero", "", at_least(0))},
+       [](const WarpParams& p) -> std::unique_ptr<const Warp> { return std::make_unique<AliasWarp>(p.at("values")); }});
   return list;
 }
 

@@ -32,17 +32,20 @@ bool moves(const Shape& shape) { return shape.motion.x != 0 || shape.motion.y !=
 
 void check(RTCDevice device, const char* what) {
   const RTCError error = rtcGetDeviceError(device);
-  if (error != RTC_ERROR_NONE) throw std::runtime_error(std::string("Embree: ") + what + " failed (error " + std::to_string(error) + ")");
+  if (error != RTC_ERROR_NONE)
+    throw std::runtime_error(std::string("Embree: ") + what + " failed (error " + std::to_string(error) + ")");
 }
 
 /// Vertex buffers for each time step: the positions at shutter open and,
 /// for moving shapes, at shutter close.
 template <class Fill>
-void set_vertices(RTCGeometry geometry, const Shape& shape, RTCFormat format, std::size_t stride, std::size_t count, Fill fill) {
+void set_vertices(RTCGeometry geometry, const Shape& shape, RTCFormat format, std::size_t stride, std::size_t count,
+                  Fill fill) {
   const unsigned steps = moves(shape) ? 2 : 1;
   rtcSetGeometryTimeStepCount(geometry, steps);
   for (unsigned step = 0; step < steps; ++step) {
-    auto* data = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, step, format, stride, count));
+    auto* data =
+        static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, step, format, stride, count));
     fill(data, step == 0 ? Vec3{} : shape.motion);
   }
 }
@@ -67,17 +70,18 @@ RTCGeometry make_geometry(RTCDevice device, const Shape& shape) {
         v[3 * i] = float(p.x), v[3 * i + 1] = float(p.y), v[3 * i + 2] = float(p.z);
       }
     });
-    auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                                                 4 * sizeof(unsigned), 1));
+    auto* index = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), 1));
     for (unsigned i = 0; i < 4; ++i) index[i] = i;
   } else {
     geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    set_vertices(geometry, shape, RTC_FORMAT_FLOAT3, 3 * sizeof(float), shape.vertices.size(), [&](float* v, Vec3 shift) {
-      for (std::size_t i = 0; i < shape.vertices.size(); ++i) {
-        const Vec3 p = shape.vertices[i] + shift;
-        v[3 * i] = float(p.x), v[3 * i + 1] = float(p.y), v[3 * i + 2] = float(p.z);
-      }
-    });
+    set_vertices(geometry, shape, RTC_FORMAT_FLOAT3, 3 * sizeof(float), shape.vertices.size(),
+                 [&](float* v, Vec3 shift) {
+                   for (std::size_t i = 0; i < shape.vertices.size(); ++i) {
+                     const Vec3 p = shape.vertices[i] + shift;
+                     v[3 * i] = float(p.x), v[3 * i + 1] = float(p.y), v[3 * i + 2] = float(p.z);
+                   }
+                 });
     auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                  3 * sizeof(unsigned), shape.indices.size()));
     for (std::size_t t = 0; t < shape.indices.size(); ++t)
@@ -94,7 +98,8 @@ double scene_extent(const Scene& scene) {
     for (Vec3 shift : {Vec3{}, shape.motion}) {
       if (shape.type == ShapeType::sphere || shape.type == ShapeType::disk)
         grow(shape.center + shift + Vec3{shape.radius, shape.radius, shape.radius});
-      if (shape.type == ShapeType::quad) grow(shape.corner + shift), grow(shape.corner + shape.edge_u + shape.edge_v + shift);
+      if (shape.type == ShapeType::quad)
+        grow(shape.corner + shift), grow(shape.corner + shape.edge_u + shape.edge_v + shift);
       for (Vec3 v : shape.vertices) grow(v + shift);
     }
   }
@@ -106,7 +111,8 @@ RTCRay to_embree(const Ray& ray, double t_near) {
   r.org_x = float(ray.origin.x), r.org_y = float(ray.origin.y), r.org_z = float(ray.origin.z);
   r.dir_x = float(ray.direction.x), r.dir_y = float(ray.direction.y), r.dir_z = float(ray.direction.z);
   r.tnear = float(t_near);
-  r.tfar = ray.t_max >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(ray.t_max);
+  r.tfar = ray.t_max >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity()
+                                                                  : float(ray.t_max);
   r.time = float(ray.time);
   r.mask = ~0u;
   r.id = 0;

@@ -8,10 +8,14 @@
 namespace stratum::render {
 
 CameraModel::CameraModel(const Camera& camera)
-    : position_(camera.position), forward_(normalize(camera.look_at - camera.position)),
+    : position_(camera.position),
+      forward_(normalize(camera.look_at - camera.position)),
       tan_half_(std::tan(camera.fov_degrees * std::numbers::pi / 360)),
-      aspect_(double(camera.width) / double(camera.height)), aperture_(camera.aperture_radius),
-      focus_(camera.focus_distance), width_(camera.width), height_(camera.height) {
+      aspect_(double(camera.width) / double(camera.height)),
+      aperture_(camera.aperture_radius),
+      focus_(camera.focus_distance),
+      width_(camera.width),
+      height_(camera.height) {
   // forward × up points to the image's right in a right-handed frame (the
   // Cornell box's red wall, at large x, appears on the left).
   right_ = normalize(cross(forward_, camera.up));

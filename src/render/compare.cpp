@@ -99,7 +99,8 @@ std::vector<CompareConfig> builtin_comparison(const std::string& name, unsigned 
 }
 
 std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned threads, std::uint64_t seed) {
-  if (!configs.is_array() || configs.empty()) throw invalid_argument("configs", io::json_excerpt(configs), "must be a non-empty JSON array");
+  if (!configs.is_array() || configs.empty())
+    throw invalid_argument("configs", io::json_excerpt(configs), "must be a non-empty JSON array");
   std::vector<CompareConfig> result;
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const auto& c = configs[i];
@@ -132,8 +133,7 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
       else if (key == "pixel_centers") {
         if (!v.is_boolean()) throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be true or false");
         s.pixel_centers = v.get<bool>();
-      }
-      else
+      } else
         throw invalid_argument(where + "." + key, "(unknown key)",
                                "allowed keys are label, integrator, spp, light_samples, light_strategy, hemisphere, "
                                "sampler, randomize, time_pattern, max_depth, pixel_centers");
@@ -159,7 +159,8 @@ void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argume
 double mean_squared_error(const Image& image, const Image& reference) {
   require(image.rgb.size() == reference.rgb.size(), "reference", "(another resolution)", "must match the image's size");
   double sum = 0;
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) sum += (image.rgb[i] - reference.rgb[i]) * (image.rgb[i] - reference.rgb[i]);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i)
+    sum += (image.rgb[i] - reference.rgb[i]) * (image.rgb[i] - reference.rgb[i]);
   return sum / double(image.rgb.size());
 }
 
@@ -196,9 +197,7 @@ RenderSettings reference_settings(const RenderSettings& settings, std::uint32_t 
   return reference;
 }
 
-std::string variance_sibling(const std::string& path) {
-  return path.substr(0, path.size() - 4) + ".variance.exr";
-}
+std::string variance_sibling(const std::string& path) { return path.substr(0, path.size() - 4) + ".variance.exr"; }
 
 /// "3-16 shadow rays" -> "3-16-shadow-rays": a file name for a row.
 std::string file_name_for(std::size_t index, const std::string& label) {
@@ -212,8 +211,8 @@ std::string file_name_for(std::size_t index, const std::string& label) {
 std::string reference_cache_path(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
                                  std::uint32_t spp, const std::string& cache_dir) {
   const std::uint64_t key = hash64(std::hash<std::string>{}(scene_key), std::hash<std::string>{}(settings.integrator),
-                                   settings.max_depth, spp, std::uint64_t(scene.camera.width), std::uint64_t(scene.camera.height),
-                                   std::uint64_t(settings.pixel_centers), 2);
+                                   settings.max_depth, spp, std::uint64_t(scene.camera.width),
+                                   std::uint64_t(scene.camera.height), std::uint64_t(settings.pixel_centers), 2);
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(key));
   return (std::filesystem::path(cache_dir) / (scene.name + "-" + settings.integrator + "-" + hex + ".exr")).string();
@@ -273,7 +272,8 @@ Image load_cached_reference(const std::string& path, std::uint32_t spp, std::str
       }
       const nlohmann::json& expected = meta.at(key);
       if (expected.at("bytes").get<std::uint64_t>() != size || expected.at("fnv1a64").get<std::string>() != hex) {
-        why = file + " is not the file its metadata describes (" + std::to_string(size) + " bytes, fingerprint " + hex + ")";
+        why = file + " is not the file its metadata describes (" + std::to_string(size) + " bytes, fingerprint " + hex +
+              ")";
         return image;
       }
     }
@@ -295,8 +295,8 @@ Image load_cached_reference(const std::string& path, std::uint32_t spp, std::str
 
 }  // namespace
 
-Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings, std::uint32_t spp,
-                      const std::string& cache_dir, bool* cached, std::string* warning) {
+Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
+                      std::uint32_t spp, const std::string& cache_dir, bool* cached, std::string* warning) {
   const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
   const bool there = std::filesystem::exists(path) || std::filesystem::exists(metadata_sibling(path));
   std::string why = "not cached";
@@ -362,7 +362,8 @@ constexpr std::uint32_t progressive_set = 4096;
 
 Image render_equal_time(const Accelerator& accelerator, const RenderSettings& settings, double seconds,
                         std::uint32_t* passes) {
-  require(std::isfinite(seconds) && seconds > 0 && seconds <= 1e6, "equal-time", seconds, "must be in (0, 1e6] seconds");
+  require(std::isfinite(seconds) && seconds > 0 && seconds <= 1e6, "equal-time", seconds,
+          "must be in (0, 1e6] seconds");
   validate_settings(settings);
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -422,16 +423,18 @@ std::vector<double> luminance_error(const Image& image, const Image& reference) 
   return error;
 }
 
-std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
-                                std::uint32_t reference_spp, const std::string& cache_dir) {
+std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key,
+                                const std::vector<CompareConfig>& configs, std::uint32_t reference_spp,
+                                const std::string& cache_dir) {
   CompareOptions options;
   options.reference_spp = reference_spp;
   options.cache_dir = cache_dir;
   return compare(scene, scene_key, configs, options);
 }
 
-std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
-                                const CompareOptions& options, CompareImages* images) {
+std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key,
+                                const std::vector<CompareConfig>& configs, const CompareOptions& options,
+                                CompareImages* images) {
   require(options.reference_spp >= 1 && options.reference_spp <= (1u << 24), "reference-spp", options.reference_spp,
           "must be in [1, 2^24]");
   require(std::isfinite(options.equal_time) && options.equal_time >= 0 && options.equal_time <= 1e6, "equal-time",
@@ -441,7 +444,9 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
   if (!options.variance_dir.empty()) {
     std::error_code error;
     std::filesystem::create_directories(options.variance_dir, error);
-    if (error) throw invalid_argument("variance-dir", options.variance_dir, "must be a folder stratum can create: " + error.message());
+    if (error)
+      throw invalid_argument("variance-dir", options.variance_dir,
+                             "must be a folder stratum can create: " + error.message());
   }
   // Every variance image staged before the first render; all put in place at the end.
   io::OutputGroup variance_files;
@@ -449,7 +454,8 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
   if (!options.variance_dir.empty()) {
     for (std::size_t index = 0; index < configs.size(); ++index)
       variance_file[index] = variance_files.add(
-          "variance-dir", (std::filesystem::path(options.variance_dir) / file_name_for(index, configs[index].label)).string());
+          "variance-dir",
+          (std::filesystem::path(options.variance_dir) / file_name_for(index, configs[index].label)).string());
     variance_files.prepare();
   }
   {  // the memory of a render, of an equal-time total and of one reference (an Image) per estimand
@@ -459,10 +465,10 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
                        (config.settings.pixel_centers ? "/centres" : ""));
     const double image_bytes = 6 * sizeof(double);  // per pixel: mean and variance, 3 channels
     require_render_memory(scene.camera, image_bytes * double(1 + estimands.size()),
-                          "comparison (a render, its total and " + std::to_string(estimands.size()) + " reference image" +
-                              (estimands.size() == 1 ? ")" : "s)"));
+                          "comparison (a render, its total and " + std::to_string(estimands.size()) +
+                              " reference image" + (estimands.size() == 1 ? ")" : "s)"));
   }
-  const Accelerator accelerator(scene);  // one BVH for every configuration
+  const Accelerator accelerator(scene);     // one BVH for every configuration
   std::map<std::string, Image> references;  // one per estimand (integrator)
   std::vector<CompareRow> rows;
   for (std::size_t index = 0; index < configs.size(); ++index) {
@@ -479,8 +485,9 @@ std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key
       }
     }
     CompareRow row;
-    Image image = options.equal_time > 0 ? render_equal_time(accelerator, config.settings, options.equal_time, &row.passes)
-                                         : render(accelerator, config.settings, {}, &interrupt_flag());
+    Image image = options.equal_time > 0
+                      ? render_equal_time(accelerator, config.settings, options.equal_time, &row.passes)
+                      : render(accelerator, config.settings, {}, &interrupt_flag());
     if (image.stopped) throw interrupted();
     row.label = config.label;
     row.samples = image.samples;

@@ -37,7 +37,12 @@ class Fingerprint {
 std::string scene_fingerprint(const Scene& scene) {
   Fingerprint f;
   const Camera& c = scene.camera;
-  f.add(c.position).add(c.look_at).add(c.up).add(c.fov_degrees).add_bits(std::uint64_t(c.width)).add_bits(std::uint64_t(c.height));
+  f.add(c.position)
+      .add(c.look_at)
+      .add(c.up)
+      .add(c.fov_degrees)
+      .add_bits(std::uint64_t(c.width))
+      .add_bits(std::uint64_t(c.height));
   f.add(c.aperture_radius).add(c.focus_distance).add(c.shutter_open).add(c.shutter_close);
   f.add_bits(scene.materials.size());
   for (const Material& m : scene.materials)

@@ -50,13 +50,13 @@ Scene cornell_box() {
   };
   const std::size_t white = 0, red = 1, green = 2, light = 3;
 
-  add_polygon(scene, white, {{552.8, 0, 0}, {0, 0, 0}, {0, 0, 559.2}, {549.6, 0, 559.2}});              // floor
-  add_polygon(scene, white, {{556, 548.8, 0}, {556, 548.8, 559.2}, {0, 548.8, 559.2}, {0, 548.8, 0}});  // ceiling
+  add_polygon(scene, white, {{552.8, 0, 0}, {0, 0, 0}, {0, 0, 559.2}, {549.6, 0, 559.2}});                // floor
+  add_polygon(scene, white, {{556, 548.8, 0}, {556, 548.8, 559.2}, {0, 548.8, 559.2}, {0, 548.8, 0}});    // ceiling
   add_polygon(scene, white, {{549.6, 0, 559.2}, {0, 0, 559.2}, {0, 548.8, 559.2}, {556, 548.8, 559.2}});  // back
-  add_polygon(scene, green, {{0, 0, 559.2}, {0, 0, 0}, {0, 548.8, 0}, {0, 548.8, 559.2}});              // right
+  add_polygon(scene, green, {{0, 0, 559.2}, {0, 0, 0}, {0, 548.8, 0}, {0, 548.8, 559.2}});                // right
   add_polygon(scene, red, {{552.8, 0, 0}, {549.6, 0, 559.2}, {556, 548.8, 559.2}, {556, 548.8, 0}});      // left
-  add_block(scene, white, {Vec3{130, 165, 65}, {82, 165, 225}, {240, 165, 272}, {290, 165, 114}});      // short
-  add_block(scene, white, {Vec3{423, 330, 247}, {265, 330, 296}, {314, 330, 456}, {472, 330, 406}});    // tall
+  add_block(scene, white, {Vec3{130, 165, 65}, {82, 165, 225}, {240, 165, 272}, {290, 165, 114}});        // short
+  add_block(scene, white, {Vec3{423, 330, 247}, {265, 330, 296}, {314, 330, 456}, {472, 330, 406}});      // tall
 
   // The light: 130 × 105 at the ceiling's height, lowered by 0.01 so that it
   // is not coplanar with the ceiling.

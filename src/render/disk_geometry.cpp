@@ -14,7 +14,8 @@ void disk_bounds(const RTCBoundsFunctionArguments* args) {
   const Shape& disk = *static_cast<const Shape*>(args->geometryUserPtr);
   const Vec3 c = disk.center + double(args->timeStep) * disk.motion;
   const Vec3 n = disk.normal;
-  const Vec3 e{disk.radius * std::sqrt(std::max(0.0, 1 - n.x * n.x)), disk.radius * std::sqrt(std::max(0.0, 1 - n.y * n.y)),
+  const Vec3 e{disk.radius * std::sqrt(std::max(0.0, 1 - n.x * n.x)),
+               disk.radius * std::sqrt(std::max(0.0, 1 - n.y * n.y)),
                disk.radius * std::sqrt(std::max(0.0, 1 - n.z * n.z))};
   // Rounded outwards to float, with a relative margin for the conversion.
   const auto lo = [](double v, double half) { return std::nextafter(float(v - half * (1 + 1e-6)), -INFINITY); };

@@ -30,7 +30,7 @@ namespace {
 
 // The same loops where AVX-512DQ multiplies 64-bit lanes: GCC vectorizes them 8 positions at a time.
 [[gnu::target("avx512f,avx512dq,avx512vl")]] void zero_images_avx512(std::uint64_t dimension_key, std::uint32_t base,
-                                                            std::uint8_t* out) noexcept {
+                                                                     std::uint8_t* out) noexcept {
   zero_images(dimension_key, base, out);
 }
 
@@ -41,8 +41,8 @@ void halton_zero_images_portable(std::uint64_t dimension_key, std::uint32_t base
 }
 
 bool halton_zero_images_vectorized() noexcept {
-  static const bool supported = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-                                __builtin_cpu_supports("avx512vl");
+  static const bool supported =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
   return supported;
 }
 

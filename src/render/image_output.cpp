@@ -29,7 +29,8 @@ double srgb(double linear) {
 /// The file name's extension in lower case (".EXR" -> ".exr").
 std::string lowercase_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return extension;
 }
 
@@ -47,7 +48,8 @@ void write_image(const Image& image, io::OutputFile& file) {
     floats.assign(image.rgb.begin(), image.rgb.end());
   } else {
     bytes.resize(image.rgb.size());
-    for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(std::lround(255 * srgb(image.rgb[i])));
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+      bytes[i] = static_cast<unsigned char>(std::lround(255 * srgb(image.rgb[i])));
   }
   // The staging file has the target's extension: OpenImageIO picks the format by it.
   try {
@@ -62,7 +64,8 @@ void write_image(const Image& image, io::OutputFile& file) {
   // is caught here, and stratum never leaves an image its reader refuses.
   try {
     const Image back = read_image(file.staging());
-    if (back.width != image.width || back.height != image.height) throw std::runtime_error("it reads back at another size");
+    if (back.width != image.width || back.height != image.height)
+      throw std::runtime_error("it reads back at another size");
   } catch (const std::exception& e) {
     std::string why = e.what();  // the reader's reason, without the staging file's name
     const auto reason = why.find(": ", why.find(file.staging()));
@@ -86,7 +89,8 @@ void check_image_path(const std::string& argument, const std::string& path) {
   } catch (const std::runtime_error& e) {  // the module did not load
     throw invalid_argument(argument, path, std::string("cannot be written: ") + e.what());
   }
-  if (!known) throw invalid_argument(argument, path, "must end in an image format OpenImageIO writes (.exr, .png, ...)");
+  if (!known)
+    throw invalid_argument(argument, path, "must end in an image format OpenImageIO writes (.exr, .png, ...)");
   std::filesystem::path folder = std::filesystem::path(path).parent_path();
   if (folder.empty()) folder = ".";
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
@@ -95,7 +99,8 @@ void check_image_path(const std::string& argument, const std::string& path) {
 
 void check_variance_path(const std::string& argument, const std::string& path) {
   const std::string extension = lowercase_extension(path);
-  require(extension == ".exr", argument, path, "must be an OpenEXR file (.exr): variances are linear, unbounded values");
+  require(extension == ".exr", argument, path,
+          "must be an OpenEXR file (.exr): variances are linear, unbounded values");
 }
 
 void write_variance_image(const Image& image, io::OutputFile& file) {

@@ -146,10 +146,14 @@ Pixels read(const std::string& path, const std::string& argument) {
   };
   char error[1024] = "";
   switch (loaded->read(path.c_str(), &pixels, allocate, error, sizeof error)) {
-    case 0: return pixels;
-    case 1: throw invalid_argument(argument, path, std::string("must be a readable image: ") + error);
-    case 2: throw invalid_argument(argument, path, std::string("must be a 2D image with 3 or more channels: ") + error);
-    default: throw invalid_argument(argument, path, std::string("could not be read: ") + error);
+    case 0:
+      return pixels;
+    case 1:
+      throw invalid_argument(argument, path, std::string("must be a readable image: ") + error);
+    case 2:
+      throw invalid_argument(argument, path, std::string("must be a 2D image with 3 or more channels: ") + error);
+    default:
+      throw invalid_argument(argument, path, std::string("could not be read: ") + error);
   }
 }
 

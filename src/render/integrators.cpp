@@ -77,7 +77,7 @@ struct Integrator::Prepared {
               : settings.integrator == "path"     ? Kind::path
                                                   : Kind::direct;
   bool cosine = settings.hemisphere == "cosine";
-  Vec3 environment;                    ///< the sum of the environment lights' radiance
+  Vec3 environment;                     ///< the sum of the environment lights' radiance
   std::vector<LightGeometry> geometry;  ///< by light
   /// By light, how sample_lights takes it: skipped (found by BSDF sampling
   /// instead), a quad by area (inline), or through sample_light.
@@ -120,7 +120,9 @@ struct Context {
     const double eps = accelerator.epsilon();
     return !accelerator.occluded({from, direction, time, distance - 2 * eps});
   }
-  Vec3 facing(const Hit& hit, Vec3 direction) const { return dot(hit.normal, direction) < 0 ? hit.normal : -hit.normal; }
+  Vec3 facing(const Hit& hit, Vec3 direction) const {
+    return dot(hit.normal, direction) < 0 ? hit.normal : -hit.normal;
+  }
   Bsdf bsdf_at(const Hit& hit, Vec3 direction) const {
     return Bsdf(material_of(hit), facing(hit, direction), -normalize(direction));
   }
@@ -174,19 +176,19 @@ struct Context {
   /// The radiance a BSDF-sampled ray (from x along wi, drawn with density
   /// pdf_bsdf, one of bsdf_samples) finds in an emitter or the environment,
   /// MIS-weighted against the light_samples light samples taken at x.
-  Vec3 emitter_found(Vec3 x, Vec3 n, double time, Vec3 wi, double pdf_bsdf, double bsdf_samples,
-                     double light_samples, const std::optional<Hit>& next) const {
+  Vec3 emitter_found(Vec3 x, Vec3 n, double time, Vec3 wi, double pdf_bsdf, double bsdf_samples, double light_samples,
+                     const std::optional<Hit>& next) const {
     const Vec3 le = next ? emitted(*next, wi) : environment();
     if (is_black(le) || !strategy.mis()) return le;
     const double lights = double(scene.lights.size());
     double pdf_light = 0;
     for (std::size_t index = 0; index < scene.lights.size(); ++index) {
       const Light& light = scene.lights[index];
-      const bool match = next ? light.type == LightType::area && light.shape == next->shape
-                              : light.type == LightType::environment;
+      const bool match =
+          next ? light.type == LightType::area && light.shape == next->shape : light.type == LightType::environment;
       if (match) {  // each environment light is sampled with the same density
-        pdf_light = light_pdf(scene, light, prepared.geometry[index], x, n, time, wi, next ? &*next : nullptr,
-                              strategy.light);
+        pdf_light =
+            light_pdf(scene, light, prepared.geometry[index], x, n, time, wi, next ? &*next : nullptr, strategy.light);
         break;
       }
     }

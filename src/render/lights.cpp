@@ -153,8 +153,8 @@ std::optional<LightSample> sample_quad_solid_angle(const Shape& shape, const Lig
 /// ray–sphere intersection, d cos θ − sqrt(r² − d² sin² θ). The map is the
 /// core UniformCone's (warps/sphere.hpp), written here in 1 − cos θ: from
 /// cos θ_max a small far sphere's cap (sin² θ_max < 1e-16) rounds to nothing.
-std::optional<LightSample> sample_sphere_cone(const Shape& shape, const LightGeometry& geometry,
-                                              const SphereView& view, Vec3 x, std::array<double, 2> u) {
+std::optional<LightSample> sample_sphere_cone(const Shape& shape, const LightGeometry& geometry, const SphereView& view,
+                                              Vec3 x, std::array<double, 2> u) {
   const double r2 = shape.radius * shape.radius, d = std::sqrt(view.distance2);
   const double cone = cone_one_minus_cos(r2, view.distance2);
   const double one_minus_cos = u[0] * cone;
@@ -229,8 +229,8 @@ std::optional<LightSample> sample_light(const Scene& scene, const Light& light, 
   if (light.type == LightType::environment) {
     const auto local = sample_cosine_hemisphere(u);
     if (local[2] <= 0) return std::nullopt;
-    return LightSample{Frame(n).to_world(local), std::numeric_limits<double>::infinity(), light.radiance,
-                       local[2] / pi, false};
+    return LightSample{Frame(n).to_world(local), std::numeric_limits<double>::infinity(), light.radiance, local[2] / pi,
+                       false};
   }
   const Shape& shape = scene.shapes[light.shape];
   if (shape.type == ShapeType::triangles && shape.triangle_cdf.empty()) return std::nullopt;  // no triangles left

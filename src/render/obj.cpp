@@ -65,8 +65,9 @@ ObjMesh parse_obj(const std::string& text, const std::string& origin) {
       }
       faces.push_back(std::move(face));
     } else if (!ignored.count(keyword)) {
-      throw invalid_argument(place(origin, number), keyword,
-                             "unknown OBJ statement (allowed: v, f; ignored: vt, vn, vp, g, o, s, usemtl, mtllib, l, p)");
+      throw invalid_argument(
+          place(origin, number), keyword,
+          "unknown OBJ statement (allowed: v, f; ignored: vt, vn, vp, g, o, s, usemtl, mtllib, l, p)");
     }
   }
   for (const Face& face : faces) {
@@ -74,12 +75,13 @@ ObjMesh parse_obj(const std::string& text, const std::string& origin) {
     for (long long value : face.indices) {
       const long long zero_based = value > 0 ? value - 1 : static_cast<long long>(face.vertices_before) + value;
       if (zero_based < 0 || zero_based >= static_cast<long long>(mesh.vertices.size()))
-        throw invalid_argument(place(origin, face.line), std::to_string(value),
-                               "face index names no vertex (the file has " + std::to_string(mesh.vertices.size()) +
-                                   " vertices)");
+        throw invalid_argument(
+            place(origin, face.line), std::to_string(value),
+            "face index names no vertex (the file has " + std::to_string(mesh.vertices.size()) + " vertices)");
       resolved.push_back(static_cast<unsigned>(zero_based));
     }
-    for (std::size_t k = 1; k + 1 < resolved.size(); ++k) mesh.triangles.push_back({resolved[0], resolved[k], resolved[k + 1]});
+    for (std::size_t k = 1; k + 1 < resolved.size(); ++k)
+      mesh.triangles.push_back({resolved[0], resolved[k], resolved[k + 1]});
   }
   if (mesh.triangles.empty()) throw invalid_argument("mesh", origin, "has no faces");
   return mesh;

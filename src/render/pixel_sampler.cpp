@@ -96,7 +96,7 @@ void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonS
   static constexpr unsigned positions_of[2] = {digits_detail::digit_count(2), digits_detail::digit_count(3)};
   static constexpr unsigned chunk_of[2] = {digits_detail::chunk_digits(2), digits_detail::chunk_digits(3)};
   static_assert(positions_of[0] <= 64 && positions_of[1] <= 64);  // halton_zero_images' array below
-  const digits_detail::ShuffledPermutationRule rule(seed);  // RandomDigitPermutations' permutations
+  const digits_detail::ShuffledPermutationRule rule(seed);        // RandomDigitPermutations' permutations
   for (unsigned c = 0; c < coordinates; ++c) {
     const std::uint32_t base = c + 2;
     const unsigned positions = positions_of[c], chunk = chunk_of[c];
@@ -202,7 +202,8 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     for (auto& set : halton_sets_) set.coordinates = 0;
     if (!spacetime_.empty()) {
       // A frame's own time pattern also where the pixel key is every frame's (progressive samplers).
-      const std::uint64_t time_seed = settings_.frame == 0 ? hash64(key, tag_time) : hash64(key, tag_time, settings_.frame);
+      const std::uint64_t time_seed =
+          settings_.frame == 0 ? hash64(key, tag_time) : hash64(key, tag_time, settings_.frame);
       spacetime_set_ = draw(spacetime_, settings_.spp, 3, time_seed);
     }
   }

@@ -24,7 +24,8 @@ void validate_settings(const RenderSettings& s) {
   const auto& l = s.light_strategy;
   require(l == "area" || l == "solid-angle" || l == "projected-solid-angle" || l == "bsdf" || l == "mis",
           "light-strategy", l, "allowed: area, solid-angle, projected-solid-angle, bsdf, mis");
-  require(s.hemisphere == "uniform" || s.hemisphere == "cosine", "hemisphere", s.hemisphere, "allowed: uniform, cosine");
+  require(s.hemisphere == "uniform" || s.hemisphere == "cosine", "hemisphere", s.hemisphere,
+          "allowed: uniform, cosine");
   require(s.light_samples >= 1 && s.light_samples <= 65536, "light-samples", s.light_samples, "must be in [1, 65536]");
   require(s.max_depth >= 1 && s.max_depth <= 1024, "max-depth", s.max_depth, "must be in [1, 1024]");
   require(s.threads >= 1 && s.threads <= 1024, "threads", s.threads, "must be in [1, 1024]");
@@ -36,9 +37,9 @@ void validate_settings(const RenderSettings& s) {
   try {  // the shadow-ray arrays: n = light_samples points of the sampler (jittered needs n = k²)
     sampler.draw_for_test(s.light_samples, 0);
   } catch (const invalid_argument& e) {
-    throw invalid_argument("light-samples", std::to_string(s.light_samples),
-                           "the sampler " + s.sampler.sampler + " cannot draw that many points per shading point (" +
-                               e.what() + ")");
+    throw invalid_argument(
+        "light-samples", std::to_string(s.light_samples),
+        "the sampler " + s.sampler.sampler + " cannot draw that many points per shading point (" + e.what() + ")");
   }
 }
 
@@ -134,7 +135,8 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
       }
     });
     bool complete = true;
-    for (int local = 0; local < my_tiles; ++local) complete = complete && tile_samples[std::size_t(tile_of(local))] == last;
+    for (int local = 0; local < my_tiles; ++local)
+      complete = complete && tile_samples[std::size_t(tile_of(local))] == last;
     if (!complete) {  // stopped within the pass (alone only)
       stopped = true;
       break;
@@ -149,7 +151,9 @@ Image render_from(Clock::time_point start, const Accelerator& accelerator, const
     }
   }
   // Tile row r holds pixel rows [16r, min(16r + 16, height)): 3 sums each per pixel.
-  const auto row_offset = [&](std::size_t r) { return 3 * std::size_t(width) * std::min<std::size_t>(tile * r, height); };
+  const auto row_offset = [&](std::size_t r) {
+    return 3 * std::size_t(width) * std::min<std::size_t>(tile * r, height);
+  };
   distributed::gather_dealt({sum.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
   distributed::gather_dealt({sum2.get(), 3 * pixels}, std::size_t(tiles_y), row_offset);
 

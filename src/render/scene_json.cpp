@@ -29,7 +29,8 @@ using nlohmann::json;
 /// Reads one JSON object, knowing its place ("camera", "shapes[2]") for messages.
 class Reader {
  public:
-  Reader(const json& object, std::string where, const std::set<std::string>& allowed) : object_(object), where_(std::move(where)) {
+  Reader(const json& object, std::string where, const std::set<std::string>& allowed)
+      : object_(object), where_(std::move(where)) {
     if (!object.is_object()) throw invalid_argument(where_, io::json_excerpt(object), "must be a JSON object");
     for (const auto& item : object.items())
       if (!allowed.count(item.key())) {
@@ -44,7 +45,9 @@ class Reader {
     return object_.at(key);
   }
   std::string name(const std::string& key) const { return where_ + "." + key; }
-  double number(const std::string& key, double fallback) const { return has(key) ? to_number(at(key), name(key)) : fallback; }
+  double number(const std::string& key, double fallback) const {
+    return has(key) ? to_number(at(key), name(key)) : fallback;
+  }
   double number(const std::string& key) const { return to_number(at(key), name(key)); }
   Vec3 vec3(const std::string& key, Vec3 fallback) const { return has(key) ? to_vec3(at(key), name(key)) : fallback; }
   Vec3 vec3(const std::string& key) const { return to_vec3(at(key), name(key)); }
@@ -62,7 +65,8 @@ class Reader {
     return x;
   }
   static Vec3 to_vec3(const json& value, const std::string& where) {
-    if (!value.is_array() || value.size() != 3) throw invalid_argument(where, io::json_excerpt(value), "must be an array of 3 numbers");
+    if (!value.is_array() || value.size() != 3)
+      throw invalid_argument(where, io::json_excerpt(value), "must be an array of 3 numbers");
     return {to_number(value[0], where + "[0]"), to_number(value[1], where + "[1]"), to_number(value[2], where + "[2]")};
   }
 
@@ -72,7 +76,8 @@ class Reader {
 };
 
 Camera read_camera(const json& value) {
-  const Reader r(value, "camera", {"position", "look_at", "up", "fov", "resolution", "aperture_radius", "focus_distance", "shutter"});
+  const Reader r(value, "camera",
+                 {"position", "look_at", "up", "fov", "resolution", "aperture_radius", "focus_distance", "shutter"});
   Camera camera;
   camera.position = r.vec3("position", camera.position);
   camera.look_at = r.vec3("look_at", camera.look_at);
@@ -83,9 +88,11 @@ Camera read_camera(const json& value) {
   if (r.has("resolution")) {
     const json& res = r.at("resolution");
     if (!res.is_array() || res.size() != 2 || !res[0].is_number_integer() || !res[1].is_number_integer())
-      throw invalid_argument("camera.resolution", io::json_excerpt(res), "must be [width, height], two positive integers");
+      throw invalid_argument("camera.resolution", io::json_excerpt(res),
+                             "must be [width, height], two positive integers");
     const auto w = res[0].get<std::int64_t>(), h = res[1].get<std::int64_t>();
-    require(w >= 1 && w <= 16384 && h >= 1 && h <= 16384, "camera.resolution", io::json_excerpt(res), "each side must be in [1, 16384]");
+    require(w >= 1 && w <= 16384 && h >= 1 && h <= 16384, "camera.resolution", io::json_excerpt(res),
+            "each side must be in [1, 16384]");
     camera.width = static_cast<int>(w);
     camera.height = static_cast<int>(h);
   }
@@ -100,7 +107,8 @@ Camera read_camera(const json& value) {
 }
 
 std::vector<Material> read_materials(const json& value, std::map<std::string, std::size_t>& index) {
-  if (!value.is_object()) throw invalid_argument("materials", io::json_excerpt(value), "must be an object of named materials");
+  if (!value.is_object())
+    throw invalid_argument("materials", io::json_excerpt(value), "must be an object of named materials");
   std::vector<Material> materials;
   for (const auto& item : value.items()) {
     const Reader r(item.value(), "materials." + item.key(), {"type", "reflectance", "emission", "exponent"});
@@ -112,7 +120,8 @@ std::vector<Material> read_materials(const json& value, std::map<std::string, st
     else if (type == "glossy") material.type = MaterialType::glossy;
     else throw invalid_argument(r.name("type"), type, "allowed types are diffuse, mirror, glossy");
     if (r.has("exponent") && material.type != MaterialType::glossy)
-      throw invalid_argument(r.name("exponent"), io::json_excerpt(r.at("exponent")), "applies to glossy materials only");
+      throw invalid_argument(r.name("exponent"), io::json_excerpt(r.at("exponent")),
+                             "applies to glossy materials only");
     material.exponent = r.number("exponent", material.exponent);
     material.reflectance = r.vec3("reflectance", material.reflectance);
     material.emission = r.vec3("emission", {});
@@ -132,17 +141,20 @@ void make_disk(Shape& shape, Vec3 center, Vec3 normal, double radius, int segmen
     const double phi = 2 * std::numbers::pi * k / segments;
     shape.vertices.push_back(center + radius * (std::cos(phi) * frame.s + std::sin(phi) * frame.t));
   }
-  for (unsigned k = 0; k < unsigned(segments); ++k) shape.indices.push_back({0, 1 + k, 1 + (k + 1) % unsigned(segments)});
+  for (unsigned k = 0; k < unsigned(segments); ++k)
+    shape.indices.push_back({0, 1 + k, 1 + (k + 1) % unsigned(segments)});
 }
 
 Shape read_shape(const json& value, const std::string& where, const std::map<std::string, std::size_t>& materials,
                  const std::filesystem::path& directory) {
-  const Reader r(value, where, {"type", "material", "motion", "center", "radius", "corner", "edge_u", "edge_v", "vertices",
-                                "indices", "normal", "segments", "file"});
+  const Reader r(value, where,
+                 {"type", "material", "motion", "center", "radius", "corner", "edge_u", "edge_v", "vertices", "indices",
+                  "normal", "segments", "file"});
   Shape shape;
   const std::string material = r.text("material");
   const auto found = materials.find(material);
-  if (found == materials.end()) throw invalid_argument(r.name("material"), material, "must name an entry of \"materials\"");
+  if (found == materials.end())
+    throw invalid_argument(r.name("material"), material, "must name an entry of \"materials\"");
   shape.material = found->second;
   shape.motion = r.vec3("motion", {});
   const std::string type = r.text("type");
@@ -158,11 +170,13 @@ Shape read_shape(const json& value, const std::string& where, const std::map<std
   } else if (type == "triangles") {
     shape.type = ShapeType::triangles;
     const json& vertices = r.at("vertices");
-    if (!vertices.is_array()) throw invalid_argument(r.name("vertices"), io::json_excerpt(vertices), "must be an array of [x, y, z]");
+    if (!vertices.is_array())
+      throw invalid_argument(r.name("vertices"), io::json_excerpt(vertices), "must be an array of [x, y, z]");
     for (std::size_t v = 0; v < vertices.size(); ++v)
       shape.vertices.push_back(Reader::to_vec3(vertices[v], r.name("vertices") + "[" + std::to_string(v) + "]"));
     const json& indices = r.at("indices");
-    if (!indices.is_array()) throw invalid_argument(r.name("indices"), io::json_excerpt(indices), "must be an array of [i, j, k]");
+    if (!indices.is_array())
+      throw invalid_argument(r.name("indices"), io::json_excerpt(indices), "must be an array of [i, j, k]");
     for (std::size_t t = 0; t < indices.size(); ++t) {
       const json& tri = indices[t];
       const std::string where = r.name("indices") + "[" + std::to_string(t) + "]";
@@ -225,8 +239,9 @@ Light read_light(const json& value, const std::string& where) {
     light.type = LightType::environment;
     light.radiance = r.vec3("radiance");
   } else {
-    throw invalid_argument(r.name("type"), type,
-                           "allowed light types are point, environment (area lights are shapes with an emitting material)");
+    throw invalid_argument(
+        r.name("type"), type,
+        "allowed light types are point, environment (area lights are shapes with an emitting material)");
   }
   return light;
 }

@@ -10,14 +10,16 @@ namespace {
 
 void require_finite(Vec3 v, const std::string& what) {
   if (!is_finite(v))
-    throw invalid_argument(what, "(" + to_message_string(v.x) + ", " + to_message_string(v.y) + ", " +
-                                     to_message_string(v.z) + ")", "must be finite");
+    throw invalid_argument(
+        what, "(" + to_message_string(v.x) + ", " + to_message_string(v.y) + ", " + to_message_string(v.z) + ")",
+        "must be finite");
 }
 
 void require_non_negative(Vec3 v, const std::string& what) {
   require_finite(v, what);
-  require(v.x >= 0 && v.y >= 0 && v.z >= 0, what, "(" + to_message_string(v.x) + ", " + to_message_string(v.y) +
-          ", " + to_message_string(v.z) + ")", "must be non-negative");
+  require(v.x >= 0 && v.y >= 0 && v.z >= 0, what,
+          "(" + to_message_string(v.x) + ", " + to_message_string(v.y) + ", " + to_message_string(v.z) + ")",
+          "must be non-negative");
 }
 
 void validate_camera(const Camera& camera) {
@@ -26,19 +28,20 @@ void validate_camera(const Camera& camera) {
   require_finite(camera.up, "camera.up");
   const Vec3 forward = camera.look_at - camera.position;
   require(length(forward) > 0, "camera.look_at", "(equal to camera.position)", "must differ from camera.position");
-  require(length(cross(forward, camera.up)) > 1e-12 * length(forward) * length(camera.up), "camera.up", "(parallel to the view direction)",
-          "must not be parallel to look_at - position");
+  require(length(cross(forward, camera.up)) > 1e-12 * length(forward) * length(camera.up), "camera.up",
+          "(parallel to the view direction)", "must not be parallel to look_at - position");
   require(std::isfinite(camera.fov_degrees) && camera.fov_degrees > 0 && camera.fov_degrees < 180, "camera.fov",
           camera.fov_degrees, "must be in (0, 180) degrees");
   require(camera.width >= 1 && camera.width <= 16384, "camera.resolution width", camera.width, "must be in [1, 16384]");
-  require(camera.height >= 1 && camera.height <= 16384, "camera.resolution height", camera.height, "must be in [1, 16384]");
+  require(camera.height >= 1 && camera.height <= 16384, "camera.resolution height", camera.height,
+          "must be in [1, 16384]");
   require(std::isfinite(camera.aperture_radius) && camera.aperture_radius >= 0, "camera.aperture_radius",
           camera.aperture_radius, "must be finite and >= 0");
   require(std::isfinite(camera.focus_distance) && camera.focus_distance > 0, "camera.focus_distance",
           camera.focus_distance, "must be finite and > 0");
   require(std::isfinite(camera.shutter_open) && std::isfinite(camera.shutter_close) &&
-              camera.shutter_open <= camera.shutter_close, "camera.shutter",
-          to_message_string(camera.shutter_open) + ", " + to_message_string(camera.shutter_close),
+              camera.shutter_open <= camera.shutter_close,
+          "camera.shutter", to_message_string(camera.shutter_open) + ", " + to_message_string(camera.shutter_close),
           "must be finite with open <= close");
 }
 
@@ -64,13 +67,15 @@ void validate_scene(Scene& scene, std::vector<std::string>* warnings) {
     require_finite(shape.motion, name + ".motion");
     if (shape.type == ShapeType::sphere) {
       require_finite(shape.center, name + ".center");
-      require(std::isfinite(shape.radius) && shape.radius > 0, name + ".radius", shape.radius, "must be finite and > 0");
+      require(std::isfinite(shape.radius) && shape.radius > 0, name + ".radius", shape.radius,
+              "must be finite and > 0");
     } else if (shape.type == ShapeType::disk) {
       require_finite(shape.center, name + ".center");
       require_finite(shape.normal, name + ".normal");
       require(std::abs(length(shape.normal) - 1) < 1e-9, name + ".normal", length(shape.normal),
               "must be a unit vector (its length is shown)");
-      require(std::isfinite(shape.radius) && shape.radius > 0, name + ".radius", shape.radius, "must be finite and > 0");
+      require(std::isfinite(shape.radius) && shape.radius > 0, name + ".radius", shape.radius,
+              "must be finite and > 0");
     } else if (shape.type == ShapeType::quad) {
       require_finite(shape.corner, name + ".corner");
       require_finite(shape.edge_u, name + ".edge_u");
@@ -97,7 +102,8 @@ void validate_scene(Scene& scene, std::vector<std::string>* warnings) {
       shape.triangle_cdf.clear();
       double total = 0;
       for (const auto& tri : shape.indices) {
-        total += 0.5 * length(cross(shape.vertices[tri[1]] - shape.vertices[tri[0]], shape.vertices[tri[2]] - shape.vertices[tri[0]]));
+        total += 0.5 * length(cross(shape.vertices[tri[1]] - shape.vertices[tri[0]],
+                                    shape.vertices[tri[2]] - shape.vertices[tri[0]]));
         shape.triangle_cdf.push_back(total);
       }
     }

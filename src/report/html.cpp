@@ -19,11 +19,20 @@ std::string escape(const std::string& text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -119,7 +128,8 @@ std::string section_html(const Section& section) {
   }
   html += fmt::format(
       "<p class=\"try\">This section alone, with an extra sampler: <code>stratum report --only {0} --sampler "
-      "halton:owen</code>; in Python <code>stratum.report(\"out\", only=[\"{0}\"], samplers=[\"halton:owen\"])</code>.</p>\n",
+      "halton:owen</code>; in Python <code>stratum.report(\"out\", only=[\"{0}\"], "
+      "samplers=[\"halton:owen\"])</code>.</p>\n",
       escape(section.id));
   html += fmt::format("<p class=\"time\">Computed in {}.</p>\n</section>\n", escape(format_seconds(section.seconds)));
   return html;
@@ -127,8 +137,9 @@ std::string section_html(const Section& section) {
 
 /// The lecture's topics, each with the sections that reproduce it.
 std::string index_html(const std::vector<Section>& sections) {
-  std::string html = "<nav><div class=\"scroll\"><table>\n<caption>The lecture, topic by topic, and where each "
-                     "is reproduced</caption>\n<tr><th>lecture</th><th>topic</th><th>section</th></tr>\n";
+  std::string html =
+      "<nav><div class=\"scroll\"><table>\n<caption>The lecture, topic by topic, and where each "
+      "is reproduced</caption>\n<tr><th>lecture</th><th>topic</th><th>section</th></tr>\n";
   for (const auto& topic : lecture_topics()) {
     std::string links;
     for (const auto& section : sections)
@@ -136,8 +147,8 @@ std::string index_html(const std::vector<Section>& sections) {
         links += fmt::format("{}<a href=\"#{}\">{}</a>", links.empty() ? "" : "<br>", escape(section.id),
                              escape(section.title));
     if (links.empty()) links = "(not run: see <code>--only</code>)";
-    html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", escape(topic.lecture), escape(topic.title),
-                        links);
+    html +=
+        fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", escape(topic.lecture), escape(topic.title), links);
   }
   return html + "</table></div></nav>\n";
 }
@@ -189,9 +200,10 @@ FormattedInterval format_alike(double estimate, double low, double high, int dig
 }
 
 std::string report_html(const std::vector<Section>& sections, const ReportOptions& options, double seconds) {
-  std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-                     "<meta name=\"color-scheme\" content=\"light dark\">\n";
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<meta name=\"color-scheme\" content=\"light dark\">\n";
   html += "<title>stratum: the lecture on sampling, reproduced</title>\n<style>" + std::string(style) + "</style>\n";
   html += "</head>\n<body>\n<h1>Sampling and Monte Carlo integration, reproduced</h1>\n";
 #ifndef STRATUM_VERSION_TEXT
@@ -211,7 +223,9 @@ std::string report_html(const std::vector<Section>& sections, const ReportOption
       STRATUM_VERSION_TEXT, escape(compiler), counted(std::max(1u, std::thread::hardware_concurrency()), "core"),
       counted(options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency()), "thread"),
       escape(format_seconds(seconds)), options.quick ? "quick" : "full", options.seed,
-      options.extra_samplers.empty() ? "" : ", extra samplers " + escape(fmt::format("{}", fmt::join(options.extra_samplers, ", "))),
+      options.extra_samplers.empty()
+          ? ""
+          : ", extra samplers " + escape(fmt::format("{}", fmt::join(options.extra_samplers, ", "))),
       options.quick ? " --quick" : "");
   html += index_html(sections);
   for (const auto& section : sections) html += section_html(section);

@@ -57,7 +57,8 @@ render::Image crop_image(const render::Image& image, const PixelBox& box) {
     for (int x = box.x; x < box.x + box.width; ++x) {
       const std::size_t p = 3 * (std::size_t(y) * image.width + x);
       crop.rgb.insert(crop.rgb.end(), image.rgb.begin() + p, image.rgb.begin() + p + 3);
-      if (!image.variance.empty()) crop.variance.insert(crop.variance.end(), image.variance.begin() + p, image.variance.begin() + p + 3);
+      if (!image.variance.empty())
+        crop.variance.insert(crop.variance.end(), image.variance.begin() + p, image.variance.begin() + p + 3);
     }
   return crop;
 }
@@ -128,8 +129,8 @@ nlohmann::json picture_grid(const std::vector<GridColumn>& columns, const std::v
     std::vector<double> all;
     for (const GridColumn& column : columns) {
       differences.push_back(column.image == baseline ? std::vector<double>{}
-                            : displayed ? displayed_difference(*column.image, *baseline)
-                                        : absolute_difference(*column.image, *baseline));
+                            : displayed              ? displayed_difference(*column.image, *baseline)
+                                                     : absolute_difference(*column.image, *baseline));
       all.insert(all.end(), differences.back().begin(), differences.back().end());
     }
     const double scale = std::max(quantile(all, 0.99), 1e-6);
@@ -151,18 +152,20 @@ nlohmann::json picture_grid(const std::vector<GridColumn>& columns, const std::v
 nlohmann::json comparison_grid(const RenderedComparison& comparison, const std::vector<Crop>& crops) {
   std::vector<GridColumn> columns{{&comparison.reference, fmt::format("reference ({} spp)", comparison.reference_spp)}};
   for (std::size_t i = 0; i < comparison.rows.size(); ++i)
-    columns.push_back({&comparison.images[i], fmt::format("{}\nMSE {}", comparison.rows[i].label,
-                                                          format_number(comparison.rows[i].mse))});
+    columns.push_back({&comparison.images[i],
+                       fmt::format("{}\nMSE {}", comparison.rows[i].label, format_number(comparison.rows[i].mse))});
   return picture_grid(columns, crops, &comparison.reference, "|error| against the reference");
 }
 
 RegionError region_error(const render::Image& image, const render::Image& reference, const PixelBox& box) {
   const render::Image crop = crop_image(image, box);
-  return {masked_mean_squared_error(image, reference, box_mask(box, image.width, image.height)), mean_sample_variance(crop)};
+  return {masked_mean_squared_error(image, reference, box_mask(box, image.width, image.height)),
+          mean_sample_variance(crop)};
 }
 
-RenderedComparison run_comparison(const render::ComparisonScene& scene, const std::vector<render::CompareConfig>& configs,
-                                  std::uint32_t reference_spp, const std::string& cache_dir) {
+RenderedComparison run_comparison(const render::ComparisonScene& scene,
+                                  const std::vector<render::CompareConfig>& configs, std::uint32_t reference_spp,
+                                  const std::string& cache_dir) {
   render::CompareOptions options;
   options.reference_spp = reference_spp;
   options.cache_dir = cache_dir;
@@ -179,7 +182,8 @@ RenderedComparison run_comparison(const render::ComparisonScene& scene, const st
   return result;
 }
 
-double masked_mean_squared_error(const render::Image& image, const render::Image& reference, const std::vector<bool>& mask) {
+double masked_mean_squared_error(const render::Image& image, const render::Image& reference,
+                                 const std::vector<bool>& mask) {
   require(image.rgb.size() == reference.rgb.size() && mask.size() * 3 == image.rgb.size(), "mask", mask.size(),
           "must hold one flag per pixel of images of equal size");
   double sum = 0;
@@ -204,7 +208,8 @@ double mean_sample_variance(const render::Image& image) {
 
 nlohmann::json image_panel(const render::Image& image, const std::string& title) {
   std::vector<double> rgb(image.rgb.size());
-  for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = std::isfinite(image.rgb[i]) ? std::round(image.rgb[i] * 1e4) / 1e4 : 0;
+  for (std::size_t i = 0; i < rgb.size(); ++i)
+    rgb[i] = std::isfinite(image.rgb[i]) ? std::round(image.rgb[i] * 1e4) / 1e4 : 0;
   return {{"title", title}, {"width", image.width}, {"height", image.height}, {"rgb", rgb}};
 }
 
@@ -230,9 +235,9 @@ Table comparison_table(const RenderedComparison& comparison, const std::string& 
                "MSE ratio (first/this)", "efficiency ratio (this/first)"},
               {}};
   for (const render::CompareRow& row : comparison.rows)
-    table.rows.push_back({row.label, std::to_string(row.samples), format_number(row.mse), format_number(row.relative_mse),
-                          format_number(row.seconds), format_number(row.efficiency), format_number(row.mse_ratio),
-                          format_number(row.efficiency_ratio)});
+    table.rows.push_back({row.label, std::to_string(row.samples), format_number(row.mse),
+                          format_number(row.relative_mse), format_number(row.seconds), format_number(row.efficiency),
+                          format_number(row.mse_ratio), format_number(row.efficiency_ratio)});
   return table;
 }
 

@@ -106,8 +106,9 @@ struct RenderedComparison {
 /// Renders each configuration of `configs` on `scene` and measures it with
 /// render::compare (MSE, relative MSE, seconds, efficiency = 1 / (MSE ×
 /// seconds), ratios to the first row), keeping the images for the figures.
-RenderedComparison run_comparison(const render::ComparisonScene& scene, const std::vector<render::CompareConfig>& configs,
-                                  std::uint32_t reference_spp, const std::string& cache_dir);
+RenderedComparison run_comparison(const render::ComparisonScene& scene,
+                                  const std::vector<render::CompareConfig>& configs, std::uint32_t reference_spp,
+                                  const std::string& cache_dir);
 
 /// Mean squared error over the pixels flagged in `mask` (width·height).
 double masked_mean_squared_error(const render::Image& image, const render::Image& reference,

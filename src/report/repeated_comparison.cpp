@@ -13,8 +13,8 @@ RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
                                            const std::vector<render::CompareConfig>& configs,
                                            const render::CompareOptions& options, unsigned repeats) {
   std::vector<render::CompareImages> pictures;
-  render::RepeatedCompare repeated = render::compare_repeated(scene.scene, scene.key, configs, options, repeats, 0.95,
-                                                              &pictures);
+  render::RepeatedCompare repeated =
+      render::compare_repeated(scene.scene, scene.key, configs, options, repeats, 0.95, &pictures);
   RepeatedComparison result;
   result.repeats = repeats;
   result.reference_spp = options.reference_spp;
@@ -44,16 +44,18 @@ std::vector<RowStatistics> row_statistics(const RepeatedComparison& comparison,
 }
 
 std::string interval_method(unsigned repeats, double confidence) {
-  return fmt::format("{} seeds, each rendering every configuration (paired); a ratio is the geometric mean of the "
-                     "per-seed ratios with a Student-t {:g}% interval on their logarithms ({} degrees of freedom); "
-                     "seconds are medians",
-                     repeats, 100 * confidence, repeats - 1);
+  return fmt::format(
+      "{} seeds, each rendering every configuration (paired); a ratio is the geometric mean of the "
+      "per-seed ratios with a Student-t {:g}% interval on their logarithms ({} degrees of freedom); "
+      "seconds are medians",
+      repeats, 100 * confidence, repeats - 1);
 }
 
 namespace {
 
 std::string mse_text(const MeanError& m) {
-  return m.standard_error > 0 ? format_number(m.mean) + " ± " + format_number(m.standard_error, 2) : format_number(m.mean);
+  return m.standard_error > 0 ? format_number(m.mean) + " ± " + format_number(m.standard_error, 2)
+                              : format_number(m.mean);
 }
 
 }  // namespace
@@ -67,9 +69,10 @@ std::string time_and_efficiency_text(const RowStatistics& row, const std::string
   if (row.time_resolved)
     return fmt::format("took {} the time of {}, so its efficiency 1/(MSE × seconds) is {} that of {}",
                        format_factor(row.time_ratio), first_label, format_factor(row.efficiency_ratio), first_label);
-  return fmt::format("took the time of {} within the timing noise (the times agree within ±{}%), so no efficiency "
-                     "ratio is quoted beyond the MSE ratio",
-                     first_label, format_number(noise_percent(row.time_ratio), 2));
+  return fmt::format(
+      "took the time of {} within the timing noise (the times agree within ±{}%), so no efficiency "
+      "ratio is quoted beyond the MSE ratio",
+      first_label, format_number(noise_percent(row.time_ratio), 2));
 }
 
 Table repeated_table(const RepeatedComparison& comparison, const std::vector<RowStatistics>& statistics,

@@ -18,10 +18,10 @@ namespace stratum::report {
 
 struct RepeatedComparison {
   std::vector<std::string> labels;
-  std::vector<std::vector<render::Image>> images;  ///< [repeat][configuration]
-  std::vector<std::vector<double>> mse, seconds;   ///< [configuration][repeat]
-  std::vector<std::vector<std::uint32_t>> samples; ///< eye rays per pixel taken, [configuration][repeat]
-  render::Image reference;                         ///< of the first configuration's estimand
+  std::vector<std::vector<render::Image>> images;   ///< [repeat][configuration]
+  std::vector<std::vector<double>> mse, seconds;    ///< [configuration][repeat]
+  std::vector<std::vector<std::uint32_t>> samples;  ///< eye rays per pixel taken, [configuration][repeat]
+  render::Image reference;                          ///< of the first configuration's estimand
   std::uint32_t reference_spp = 0;
   bool reference_cached = true;
   double equal_time = 0;  ///< seconds per render at equal time; 0: equal samples

@@ -38,8 +38,7 @@ void validate_extra_sampler(const std::string& text) {
     for (const auto& sampler : samplers()) names += (names.empty() ? "" : ", ") + sampler.name;
     throw invalid_argument("sampler", text, "a registry sampler (" + names + "), optionally name:randomizer");
   }
-  if (info->min_dim > 2 || info->max_dim < 2)
-    throw invalid_argument("sampler", text, "a sampler that makes 2D points");
+  if (info->min_dim > 2 || info->max_dim < 2) throw invalid_argument("sampler", text, "a sampler that makes 2D points");
   if (!choice.randomize.empty() &&
       std::find(info->randomizers.begin(), info->randomizers.end(), choice.randomize) == info->randomizers.end()) {
     std::string allowed;
@@ -65,7 +64,8 @@ unsigned resolve_threads(unsigned threads) {
 
 void validate_report_options(const ReportOptions& options) {
   if (options.directory.empty()) throw invalid_argument("directory", "\"\"", "a folder path");
-  if (options.threads > 1024) throw invalid_argument("threads", std::to_string(options.threads), "0 (every core) to 1024");
+  if (options.threads > 1024)
+    throw invalid_argument("threads", std::to_string(options.threads), "0 (every core) to 1024");
   for (const auto& text : options.extra_samplers) validate_extra_sampler(text);
   for (const auto& id : options.only) {
     const auto& all = report_sections();
@@ -84,7 +84,8 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
   const fs::path directory(options.directory);
   std::error_code error;
   fs::create_directories(directory, error);
-  if (error) throw invalid_argument("directory", options.directory, "a folder this user can create (" + error.message() + ")");
+  if (error)
+    throw invalid_argument("directory", options.directory, "a folder this user can create (" + error.message() + ")");
   // The page and its numbers checked and staged before any section runs
   // (io::OutputFile: links written through, permissions kept).
   io::OutputGroup pages;
@@ -112,11 +113,16 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
   plot::write_plots(plots, threads);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  nlohmann::json numbers = {{"quick", options.quick}, {"seed", options.seed}, {"threads", threads},
-                            {"extra_samplers", options.extra_samplers}, {"seconds", result.seconds}};
+  nlohmann::json numbers = {{"quick", options.quick},
+                            {"seed", options.seed},
+                            {"threads", threads},
+                            {"extra_samplers", options.extra_samplers},
+                            {"seconds", result.seconds}};
   for (const auto& section : result.sections)
-    numbers["sections"][section.id] = {{"lecture", section.lecture}, {"title", section.title},
-                                       {"seconds", section.seconds}, {"numbers", section.numbers}};
+    numbers["sections"][section.id] = {{"lecture", section.lecture},
+                                       {"title", section.title},
+                                       {"seconds", section.seconds},
+                                       {"numbers", section.numbers}};
   const std::string json_text = numbers.dump(1);
   const std::string html_text = report_html(result.sections, options, result.seconds);
   report_json->write([&](std::ostream& out) { out << json_text; });

@@ -32,13 +32,13 @@ std::size_t cell_of(double u, std::size_t cells) {
 
 /// What is measured of each pattern.
 struct BlockProperties {
-  bool latin = false;             ///< one point in each 1/N stratum of every axis (measure "latin")
-  std::size_t worst_count = 0;    ///< most points in one 1/N stratum
-  std::size_t empty_strata = 0;   ///< empty 1/N strata over all axes
+  bool latin = false;                      ///< one point in each 1/N stratum of every axis (measure "latin")
+  std::size_t worst_count = 0;             ///< most points in one 1/N stratum
+  std::size_t empty_strata = 0;            ///< empty 1/N strata over all axes
   std::size_t cell_min = 0, cell_max = 0;  ///< points per cell of the √N×√N grid, over every pair of axes
-  std::size_t diagonal_pairs = 0; ///< pairs of points on one diagonal of the N×N grid (axes 0, 1)
-  double t_value = NAN;           ///< as a net in base 2 (N a power of two), else NaN
-  double star = NAN;              ///< star discrepancy
+  std::size_t diagonal_pairs = 0;          ///< pairs of points on one diagonal of the N×N grid (axes 0, 1)
+  double t_value = NAN;                    ///< as a net in base 2 (N a power of two), else NaN
+  double star = NAN;                       ///< star discrepancy
 };
 
 BlockProperties measure(const PointSet& points, unsigned threads) {
@@ -128,13 +128,12 @@ Section block_designs_section(SectionContext& context) {
   const LatinSquare small = read_square(square, side);
   const LatinSquare large = read_square(make("latin-square", 64, 3, seed), 8);
   nlohmann::json square_panel = scatter(square, "Latin square 4×4: (column, row)", side);
-  const nlohmann::json panels = {
-      scatter(make("jittered", shown, 2, seed), "jittered (4×4 strata)", side),
-      scatter(make("n-rooks", shown, 2, seed), "N-rooks (16×16 rows, columns)", shown),
-      scatter(make("n-queens", shown, 2, seed, "none"), "N-queens", shown),
-      scatter(make("multi-jittered", shown, 2, seed), "multi-jittered (4×4 strata)", side),
-      scatter(make("cmj", shown, 2, seed), "correlated multi-jittered", side),
-      square_panel};
+  const nlohmann::json panels = {scatter(make("jittered", shown, 2, seed), "jittered (4×4 strata)", side),
+                                 scatter(make("n-rooks", shown, 2, seed), "N-rooks (16×16 rows, columns)", shown),
+                                 scatter(make("n-queens", shown, 2, seed, "none"), "N-queens", shown),
+                                 scatter(make("multi-jittered", shown, 2, seed), "multi-jittered (4×4 strata)", side),
+                                 scatter(make("cmj", shown, 2, seed), "correlated multi-jittered", side),
+                                 square_panel};
   section.figures.push_back(context.plot(
       "report_points", {{"columns", 3}, {"panels", panels}}, "patterns",
       "Block designs with N = 16 points, their 1D projections as ticks under and beside each square, grid lines "
@@ -142,8 +141,9 @@ Section block_designs_section(SectionContext& context) {
       "the (column, row) projection of a 4×4 Latin square's points"));
   section.figures.push_back(context.plot(
       "report_latin_square",
-      {{"squares", {{{"title", "4×4 (the points above)"}, {"symbols", small.symbols}},
-                    {{"title", "8×8"}, {"symbols", large.symbols}}}}},
+      {{"squares",
+        {{{"title", "4×4 (the points above)"}, {"symbols", small.symbols}},
+         {{"title", "8×8"}, {"symbols", large.symbols}}}}},
       "squares",
       fmt::format("Latin squares from the latin-square sampler (each symbol once in every row and column: {})",
                   yes_no(small.each_once && large.each_once))));
@@ -174,16 +174,20 @@ Section block_designs_section(SectionContext& context) {
               {}};
   for (const auto& [name, points] : patterns) {
     const BlockProperties p = measure(points, context.threads());
-    table.rows.push_back({name, yes_no(p.latin), std::to_string(p.worst_count), std::to_string(p.empty_strata),
-                          p.cell_min == p.cell_max ? std::to_string(p.cell_min)
-                                                   : fmt::format("{} … {}", p.cell_min, p.cell_max),
-                          std::to_string(p.diagonal_pairs),
-                          std::isfinite(p.t_value) ? fmt::format("{}", p.t_value) : "n/a", format_number(p.star)});
-    section.numbers["patterns"][name] = {{"latin", p.latin},         {"worst_count", p.worst_count},
-                                         {"empty_strata", p.empty_strata}, {"cell_min", p.cell_min},
-                                         {"cell_max", p.cell_max},   {"diagonal_pairs", p.diagonal_pairs},
+    table.rows.push_back(
+        {name, yes_no(p.latin), std::to_string(p.worst_count), std::to_string(p.empty_strata),
+         p.cell_min == p.cell_max ? std::to_string(p.cell_min) : fmt::format("{} … {}", p.cell_min, p.cell_max),
+         std::to_string(p.diagonal_pairs), std::isfinite(p.t_value) ? fmt::format("{}", p.t_value) : "n/a",
+         format_number(p.star)});
+    section.numbers["patterns"][name] = {{"latin", p.latin},
+                                         {"worst_count", p.worst_count},
+                                         {"empty_strata", p.empty_strata},
+                                         {"cell_min", p.cell_min},
+                                         {"cell_max", p.cell_max},
+                                         {"diagonal_pairs", p.diagonal_pairs},
                                          {"t_value", std::isfinite(p.t_value) ? nlohmann::json(p.t_value) : nullptr},
-                                         {"star", p.star},           {"d", points.d}};
+                                         {"star", p.star},
+                                         {"d", points.d}};
   }
   section.numbers["n"] = n;
   section.numbers["latin_squares"] = {
@@ -199,8 +203,7 @@ Section block_designs_section(SectionContext& context) {
       "leave {} empty: a full grid that stratified each axis into N intervals would need N² = {} points, N-rooks "
       "uses N = {}.",
       small.each_once && large.each_once ? "once" : "not always once", n, rooks["empty_strata"].get<std::size_t>(),
-      2 * n, table_side,
-      table_side, jittered["empty_strata"].get<std::size_t>(), n * n, n));
+      2 * n, table_side, table_side, jittered["empty_strata"].get<std::size_t>(), n * n, n));
   const auto& queens = numbers["n-queens"];
   const auto& multi = numbers["multi-jittered"];
   const auto cells_text = [](const nlohmann::json& p) {
@@ -214,7 +217,8 @@ Section block_designs_section(SectionContext& context) {
       multi["latin"].get<bool>() ? "are" : "are not", cells_text(multi), table_side, table_side, cells_text(rooks)));
 
   Table square_table{"The 4×4 Latin square drawn above (rows top to bottom as in the plot; symbols A–D)",
-                     {"row", "1", "2", "3", "4"}, {}};
+                     {"row", "1", "2", "3", "4"},
+                     {}};
   for (std::size_t r = 0; r < side; ++r) {
     std::vector<std::string> row{std::to_string(r + 1)};
     row.insert(row.end(), small.symbols[r].begin(), small.symbols[r].end());

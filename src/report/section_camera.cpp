@@ -124,23 +124,25 @@ Section camera_section(SectionContext& context) {
   // The crops: the sphere's left edge (in the near focus plane) and the
   // corner of the red wall, back wall and ceiling (in the far one).
   const auto& camera = still.camera;
-  const Crop near_crop = crop_around(pixel_of(camera, ball_centre + render::Vec3{ball_radius, 0, 0}), camera, 0.25,
-                                     "sphere's edge");
+  const Crop near_crop =
+      crop_around(pixel_of(camera, ball_centre + render::Vec3{ball_radius, 0, 0}), camera, 0.25, "sphere's edge");
   const Crop far_crop = crop_around(pixel_of(camera, {556, 548.8, 559.2}), camera, 0.25, "back corner");
   const std::array<double, 2> from = pixel_of(camera, ball_centre), to = pixel_of(camera, ball_centre + motion);
   const double swept_pixels = std::hypot(to[0] - from[0], to[1] - from[1]);
-  const double radius_pixels = ball_radius / sphere_depth / std::tan(camera.fov_degrees * std::numbers::pi / 360) * size / 2;
+  const double radius_pixels =
+      ball_radius / sphere_depth / std::tan(camera.fov_degrees * std::numbers::pi / 360) * size / 2;
   const std::array<double, 2> middle{(from[0] + to[0]) / 2, (from[1] + to[1]) / 2};
-  const Crop motion_crop = crop_around(middle, camera, std::min(1.0, (2 * radius_pixels + swept_pixels) / size + 0.06),
-                                       "sphere's path");
+  const Crop motion_crop =
+      crop_around(middle, camera, std::min(1.0, (2 * radius_pixels + swept_pixels) / size + 0.06), "sphere's path");
 
   const std::string lens_words = fmt::format("lens radius {} mm", format_number(aperture));
   section.figures.push_back(image_figure(
       context,
-      picture_grid({{&pinhole, "pinhole"},
-                    {&near_image, fmt::format("{}\nfocused on the sphere ({} mm)", lens_words, format_number(sphere_depth))},
-                    {&far_image, fmt::format("{}\nfocused on the back wall ({} mm)", lens_words, format_number(back_wall))}},
-                   {near_crop, far_crop}, &pinhole, "|lens − pinhole| as displayed", true),
+      picture_grid(
+          {{&pinhole, "pinhole"},
+           {&near_image, fmt::format("{}\nfocused on the sphere ({} mm)", lens_words, format_number(sphere_depth))},
+           {&far_image, fmt::format("{}\nfocused on the back wall ({} mm)", lens_words, format_number(back_wall))}},
+          {near_crop, far_crop}, &pinhole, "|lens − pinhole| as displayed", true),
       "depth-of-field",
       fmt::format("Depth of field: the box through a pinhole and through a thin lens of radius {} mm focused near "
                   "and far, {}×{} pixels, {} samples per pixel, nothing moving; the outlined crops enlarged below, "
@@ -149,8 +151,9 @@ Section camera_section(SectionContext& context) {
       3));
   section.figures.push_back(image_figure(
       context,
-      picture_grid({{&pinhole, "still"}, {&moving_image, fmt::format("sphere moving {} mm", format_number(length(motion)))}},
-                   {motion_crop}, &pinhole, "|moving − still| as displayed", true),
+      picture_grid(
+          {{&pinhole, "still"}, {&moving_image, fmt::format("sphere moving {} mm", format_number(length(motion)))}},
+          {motion_crop}, &pinhole, "|moving − still| as displayed", true),
       "motion-blur",
       fmt::format("Motion blur: the sphere still and moving {} mm while the shutter is open (pinhole), {}×{} "
                   "pixels, {} samples per pixel; its path enlarged, and where the moving render differs from the "
@@ -169,10 +172,12 @@ Section camera_section(SectionContext& context) {
                                 {"near_focus", "focused on the sphere", &near_image},
                                 {"far_focus", "focused on the back wall", &far_image}};
   Table sharp{"Sharpness in each crop: mean squared gradient of the displayed luminance",
-              {"render", "sphere's edge (near)", "back corner (far)", "seconds"}, {}};
+              {"render", "sphere's edge (near)", "back corner (far)", "seconds"},
+              {}};
   for (const Named& r : lens_renders) {
     const double near_sharpness = sharpness(*r.image, near_box), far_sharpness = sharpness(*r.image, far_box);
-    sharp.rows.push_back({r.label, format_number(near_sharpness), format_number(far_sharpness), format_number(r.image->seconds)});
+    sharp.rows.push_back(
+        {r.label, format_number(near_sharpness), format_number(far_sharpness), format_number(r.image->seconds)});
     section.numbers["depth_of_field"][r.key] = {
         {"sharpness_near", near_sharpness}, {"sharpness_far", far_sharpness}, {"seconds", r.image->seconds}};
   }
@@ -193,10 +198,12 @@ Section camera_section(SectionContext& context) {
       swept[std::size_t(y) * size + x] = std::hypot(px - t * dx, py - t * dy) <= radius_pixels + 1.5;
     }
   const std::vector<double> motion_difference = absolute_difference(moving_image, pinhole);
-  const double inside = masked_mean(motion_difference, swept, true), outside = masked_mean(motion_difference, swept, false);
+  const double inside = masked_mean(motion_difference, swept, true),
+               outside = masked_mean(motion_difference, swept, false);
   const std::size_t swept_count = std::size_t(std::count(swept.begin(), swept.end(), true));
   Table blur{"Where the motion changes the image: mean |moving − still| luminance",
-             {"pixels", "count", "mean |difference|"}, {}};
+             {"pixels", "count", "mean |difference|"},
+             {}};
   blur.rows.push_back({"in the band the silhouette sweeps", std::to_string(swept_count), format_number(inside)});
   blur.rows.push_back({"elsewhere", std::to_string(swept.size() - swept_count), format_number(outside)});
   section.tables.push_back(std::move(blur));
@@ -234,8 +241,9 @@ Section camera_section(SectionContext& context) {
       "in radius). Inside the band its silhouette sweeps the moving render differs from the still one by {} on "
       "average, elsewhere by {} (the noise of two renders); each render of {} samples per pixel at {}×{} took "
       "about {}.",
-      format_number(length(motion)), format_number(swept_pixels, 2), format_number(radius_pixels, 2), format_number(inside),
-      format_number(outside), settings.sampler.spp, size, size, format_seconds(moving_image.seconds)));
+      format_number(length(motion)), format_number(swept_pixels, 2), format_number(radius_pixels, 2),
+      format_number(inside), format_number(outside), settings.sampler.spp, size, size,
+      format_seconds(moving_image.seconds)));
   section.try_it = {"stratum render --spp 16 --sampler sobol --randomize owen --width 128 --height 128 -o box.png"};
   return section;
 }

@@ -16,8 +16,8 @@ namespace stratum::report {
 
 class SectionContext {
  public:
-  SectionContext(const ReportOptions& options, const SectionInfo& info, std::filesystem::path staging,
-                 unsigned threads, std::vector<plot::PlotJob>& plots);
+  SectionContext(const ReportOptions& options, const SectionInfo& info, std::filesystem::path staging, unsigned threads,
+                 std::vector<plot::PlotJob>& plots);
 
   bool quick() const { return options_.quick; }
   unsigned threads() const { return threads_; }  ///< resolved: ≥ 1

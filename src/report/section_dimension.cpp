@@ -31,10 +31,15 @@ nlohmann::json finite_list(const std::vector<double>& values) {
 nlohmann::json plot_data(const sa::DimensionStudy& study) {
   nlohmann::json series = nlohmann::json::array();
   for (const auto& s : study.series)
-    series.push_back({{"d", s.d}, {"n", s.n}, {"product_error", finite_list(s.product_error)},
-                      {"mc_rmse", finite_list(s.mc_rmse)}, {"mc_predicted", finite_list(s.mc_predicted)},
-                      {"sobol_rmse", finite_list(s.sobol_rmse)}, {"product_slope", finite(s.product_slope)},
-                      {"mc_slope", finite(s.mc_slope)}, {"sobol_slope", finite(s.sobol_slope)}});
+    series.push_back({{"d", s.d},
+                      {"n", s.n},
+                      {"product_error", finite_list(s.product_error)},
+                      {"mc_rmse", finite_list(s.mc_rmse)},
+                      {"mc_predicted", finite_list(s.mc_predicted)},
+                      {"sobol_rmse", finite_list(s.sobol_rmse)},
+                      {"product_slope", finite(s.product_slope)},
+                      {"mc_slope", finite(s.mc_slope)},
+                      {"sobol_slope", finite(s.sobol_slope)}});
   return {{"rule", study.rule}, {"integrand", study.integrand}, {"runs", study.runs}, {"series", series}};
 }
 
@@ -55,12 +60,12 @@ Section dimension_section(SectionContext& context) {
   request.threads = context.threads();
   const sa::DimensionStudy study = sa::run_dimension_study(request);
 
-  Table table{fmt::format("Fitted log-log slopes of the error against N per dimension ({} product rule; MC and "
-                          "Sobol' RMSE over {} runs), and the errors at the largest N",
-                          study.rule, study.runs),
-              {"d", "N", "product slope", "−2/d", "MC slope", "Sobol' slope", "product error", "MC RMSE",
-               "Sobol' RMSE"},
-              {}};
+  Table table{
+      fmt::format("Fitted log-log slopes of the error against N per dimension ({} product rule; MC and "
+                  "Sobol' RMSE over {} runs), and the errors at the largest N",
+                  study.rule, study.runs),
+      {"d", "N", "product slope", "−2/d", "MC slope", "Sobol' slope", "product error", "MC RMSE", "Sobol' RMSE"},
+      {}};
   nlohmann::json per_dimension = nlohmann::json::array();
   int first_mc_win = 0;  // the first d where MC's RMSE at the largest N is below the product rule's error
   for (const auto& s : study.series) {
@@ -69,14 +74,18 @@ Section dimension_section(SectionContext& context) {
     if (mc_wins && first_mc_win == 0) first_mc_win = static_cast<int>(s.d);
     table.rows.push_back({std::to_string(s.d), fmt::format("{} … {}", s.n.front(), s.n.back()),
                           format_number(s.product_slope), format_number(s.product_predicted_slope),
-                          format_number(s.mc_slope), format_number(s.sobol_slope),
-                          format_number(s.product_error[last]), format_number(s.mc_rmse[last]),
-                          format_number(s.sobol_rmse[last])});
-    per_dimension.push_back({{"d", s.d}, {"m", s.m}, {"n", s.n}, {"product_error", finite_list(s.product_error)},
-                             {"mc_rmse", finite_list(s.mc_rmse)}, {"sobol_rmse", finite_list(s.sobol_rmse)},
+                          format_number(s.mc_slope), format_number(s.sobol_slope), format_number(s.product_error[last]),
+                          format_number(s.mc_rmse[last]), format_number(s.sobol_rmse[last])});
+    per_dimension.push_back({{"d", s.d},
+                             {"m", s.m},
+                             {"n", s.n},
+                             {"product_error", finite_list(s.product_error)},
+                             {"mc_rmse", finite_list(s.mc_rmse)},
+                             {"sobol_rmse", finite_list(s.sobol_rmse)},
                              {"product_slope", finite(s.product_slope)},
                              {"product_predicted_slope", finite(s.product_predicted_slope)},
-                             {"mc_slope", finite(s.mc_slope)}, {"sobol_slope", finite(s.sobol_slope)},
+                             {"mc_slope", finite(s.mc_slope)},
+                             {"sobol_slope", finite(s.sobol_slope)},
                              {"mc_wins_at_largest_n", mc_wins}});
   }
   section.numbers["rule"] = study.rule;

@@ -58,15 +58,15 @@ std::uint64_t usable_count(const sa::SamplerChoice& choice, std::uint64_t n) {
     if (takes(n - step)) return n - step;
     if (takes(n + step)) return n + step;
   }
-  throw invalid_argument("sampler", choice_label(choice), "a sampler that takes about " + std::to_string(n) + " points");
+  throw invalid_argument("sampler", choice_label(choice),
+                         "a sampler that takes about " + std::to_string(n) + " points");
 }
 
 /// The patterns compared: a few built-ins (Halton and Hammersley
 /// unscrambled, as in the lecture), then the --sampler extras not already listed.
 std::vector<sa::SamplerChoice> compared_patterns(const SectionContext& context) {
-  std::vector<sa::SamplerChoice> patterns{{"random", "", {}},         {"jittered", "", {}},
-                                          {"n-rooks", "", {}},        {"hammersley", "none", {}},
-                                          {"halton", "none", {}},     {"sobol", "owen", {}}};
+  std::vector<sa::SamplerChoice> patterns{{"random", "", {}},         {"jittered", "", {}},   {"n-rooks", "", {}},
+                                          {"hammersley", "none", {}}, {"halton", "none", {}}, {"sobol", "owen", {}}};
   for (const auto& extra : context.extra_samplers())
     if (std::none_of(patterns.begin(), patterns.end(),
                      [&](const sa::SamplerChoice& p) { return choice_label(p) == choice_label(extra); }))
@@ -82,19 +82,24 @@ nlohmann::json field_panel(const sa::SamplerChoice& choice, const PointSet& poin
   const auto box = sa::star_discrepancy_box(view);
   std::vector<double> x(points.n), y(points.n);
   for (std::size_t i = 0; i < points.n; ++i) x[i] = points(i, 0), y[i] = points(i, 1);
-  numbers = {{"n", points.n}, {"star", box.value}, {"box_x", box.x}, {"box_y", box.y}, {"closed", box.closed},
-             {"count", box.count}, {"grid_max_abs", grid.max_abs}};
-  return {{"title", fmt::format("{}, N = {}: D* = {}", capitalized(sampler_name(choice)), points.n, format_number(box.value))},
-          {"resolution", grid.resolution}, {"values", grid.values}, {"x", x}, {"y", y},
+  numbers = {
+      {"n", points.n},      {"star", box.value},           {"box_x", box.x}, {"box_y", box.y}, {"closed", box.closed},
+      {"count", box.count}, {"grid_max_abs", grid.max_abs}};
+  return {{"title",
+           fmt::format("{}, N = {}: D* = {}", capitalized(sampler_name(choice)), points.n, format_number(box.value))},
+          {"resolution", grid.resolution},
+          {"values", grid.values},
+          {"x", x},
+          {"y", y},
           {"box", {{"x", box.x}, {"y", box.y}, {"closed", box.closed}, {"value", box.value}}}};
 }
 
 std::string box_words(const nlohmann::json& numbers) {
-  return fmt::format("[0, {}) × [0, {}) with {} points where {} expected ({})", format_number(numbers["box_x"]),
-                     format_number(numbers["box_y"]), numbers["count"].get<std::size_t>(),
-                     format_number(numbers["box_x"].get<double>() * numbers["box_y"].get<double>() *
-                                   numbers["n"].get<double>()),
-                     numbers["closed"].get<bool>() ? "too many, box closed" : "too few");
+  return fmt::format(
+      "[0, {}) × [0, {}) with {} points where {} expected ({})", format_number(numbers["box_x"]),
+      format_number(numbers["box_y"]), numbers["count"].get<std::size_t>(),
+      format_number(numbers["box_x"].get<double>() * numbers["box_y"].get<double>() * numbers["n"].get<double>()),
+      numbers["closed"].get<bool>() ? "too many, box closed" : "too few");
 }
 
 }  // namespace
@@ -125,15 +130,18 @@ Section discrepancy_section(SectionContext& context) {
   // Star and L2-star discrepancies, and the Koksma–Hlawka check.
   const auto& functions = sa::variation_test_functions();
   Table values{fmt::format("Star and L2-star discrepancy of {} points (one realization, seed {})", n, context.seed()),
-               {"pattern", "D* (exact)", "L2-star"}, {}};
+               {"pattern", "D* (exact)", "L2-star"},
+               {}};
   Table checks{fmt::format("Koksma–Hlawka at N = {}: measured |error| of the mean of f against the bound V(f)·D*", n),
-               {"pattern"}, {}};
+               {"pattern"},
+               {}};
   for (const auto& function : functions) checks.header.push_back(function.formula);
   Table function_table{"Test functions: closed-form integral and Hardy–Krause variation (anchored at 1)",
-                       {"f", "∫f", "V_HK(f)", "derivation"}, {}};
+                       {"f", "∫f", "V_HK(f)", "derivation"},
+                       {}};
   for (const auto& function : functions)
-    function_table.rows.push_back(
-        {function.formula, format_number(function.integral, 6), format_number(function.variation, 6), function.derivation});
+    function_table.rows.push_back({function.formula, format_number(function.integral, 6),
+                                   format_number(function.variation, 6), function.derivation});
 
   std::size_t held = 0, total = 0;
   double tightest = -1;
@@ -149,8 +157,8 @@ Section discrepancy_section(SectionContext& context) {
     const double star = sa::compute_measure("star", view, measure).value;
     const double l2 = sa::compute_measure("l2-star", view, measure).value;
     const std::string name = named_with_spec(choice);
-    values.rows.push_back({points.n == n ? name : fmt::format("{} (N = {})", name, points.n), format_number(star),
-                           format_number(l2)});
+    values.rows.push_back(
+        {points.n == n ? name : fmt::format("{} (N = {})", name, points.n), format_number(star), format_number(l2)});
     if (star < lowest.first) lowest = {star, sampler_name(choice)};
     if (star > highest.first) highest = {star, sampler_name(choice)};
     nlohmann::json& entry = section.numbers["patterns"][label];
@@ -171,8 +179,8 @@ Section discrepancy_section(SectionContext& context) {
   }
   std::sort(fractions.begin(), fractions.end());
   const double median = fractions[fractions.size() / 2];
-  section.numbers["koksma_hlawka"] = {{"held", held}, {"checks", total}, {"largest_fraction", tightest},
-                                      {"median_fraction", median}};
+  section.numbers["koksma_hlawka"] = {
+      {"held", held}, {"checks", total}, {"largest_fraction", tightest}, {"median_fraction", median}};
   for (const auto& function : functions)
     section.numbers["functions"][function.name] = {{"integral", function.integral}, {"variation", function.variation}};
 
@@ -180,23 +188,25 @@ Section discrepancy_section(SectionContext& context) {
       "For {} points the local discrepancy |Δ| peaks on the box {} for random points (D* = {}), and on {} for "
       "Hammersley points (D* = {}); the random set's D* is {}× the Hammersley set's.",
       picture_n, box_words(random_box), format_number(random_box["star"]), box_words(hammersley_box),
-      format_number(hammersley_box["star"]), format_number(random_box["star"].get<double>() / hammersley_box["star"].get<double>())));
-  section.text.push_back(fmt::format(
-      "At N = {} the exact star discrepancy ranges from {} ({}) to {} ({}), a factor {}.", n,
-      format_number(lowest.first), lowest.second, format_number(highest.first), highest.second,
-      format_number(highest.first / lowest.first)));
+      format_number(hammersley_box["star"]),
+      format_number(random_box["star"].get<double>() / hammersley_box["star"].get<double>())));
+  section.text.push_back(
+      fmt::format("At N = {} the exact star discrepancy ranges from {} ({}) to {} ({}), a factor {}.", n,
+                  format_number(lowest.first), lowest.second, format_number(highest.first), highest.second,
+                  format_number(highest.first / lowest.first)));
   section.text.push_back(fmt::format(
       "Koksma–Hlawka, |(1/N) Σ f(p_i) − ∫f| ≤ V_HK(f)·D*: the bound held in {} of {} (pattern, function) pairs; "
       "the measured error used at most {}% of the bound ({}) and a median {}%{}.",
       held, total, format_number(100 * tightest), tightest_where, format_number(100 * median),
-      held < total   ? " (a violation: a bug in the discrepancy, the variation or the sum)"
+      held < total    ? " (a violation: a bug in the discrepancy, the variation or the sum)"
       : tightest <= 0 ? " (every error is zero)"
-                     : fmt::format(", so on these functions the bound exceeds the error by a factor {} or more",
-                                 format_number(1 / tightest))));
+                      : fmt::format(", so on these functions the bound exceeds the error by a factor {} or more",
+                                    format_number(1 / tightest))));
   section.tables.push_back(std::move(values));
   section.tables.push_back(std::move(function_table));
   section.tables.push_back(std::move(checks));
-  section.try_it = {"stratum discrepancy -m star -s halton -n 1024", "stratum discrepancy -m l2-star -s sobol -n 1024 --randomize owen"};
+  section.try_it = {"stratum discrepancy -m star -s halton -n 1024",
+                    "stratum discrepancy -m l2-star -s sobol -n 1024 --randomize owen"};
   return section;
 }
 

@@ -71,7 +71,8 @@ nlohmann::json warped_grid_lines(const Warp& warp, int cells, int steps) {
       }
       const auto p = warp_sample(warp, u.data(), u.size() / 2);
       std::vector<double> x, y;
-      for (std::size_t i = 0; i < p.size() / 2; ++i) x.push_back(std::round(p[2 * i] * 1e5) / 1e5), y.push_back(std::round(p[2 * i + 1] * 1e5) / 1e5);
+      for (std::size_t i = 0; i < p.size() / 2; ++i)
+        x.push_back(std::round(p[2 * i] * 1e5) / 1e5), y.push_back(std::round(p[2 * i + 1] * 1e5) / 1e5);
       lines.push_back({x, y});
     }
   return lines;
@@ -107,24 +108,31 @@ Section disk_section(SectionContext& context) {
     x[k] = grid(k, 0);
     y[k] = grid(k, 1);
   }
-  panels.push_back({{"title", fmt::format("jittered {}×{} grid (U₁, U₂)", cells, cells)}, {"x", x}, {"y", y},
-                    {"color", stratum}, {"grid", cells}});
-  const std::map<std::string, std::string> formulas = {
-      {"polar", "polar: θ = 2πU₁, r = √U₂"},
-      {"concentric", "concentric: r = U₁, θ = πU₂/(4U₁)"}};
+  panels.push_back({{"title", fmt::format("jittered {}×{} grid (U₁, U₂)", cells, cells)},
+                    {"x", x},
+                    {"y", y},
+                    {"color", stratum},
+                    {"grid", cells}});
+  const std::map<std::string, std::string> formulas = {{"polar", "polar: θ = 2πU₁, r = √U₂"},
+                                                       {"concentric", "concentric: r = U₁, θ = πU₂/(4U₁)"}};
 
   // Edge integrand: the indicator of x + y/2 > 0.25 over the disk.
   const double norm = std::hypot(1.0, 0.5), offset = 0.25 / norm;
   const double exact = segment_fraction(offset);
   Table table{"Strata images and jittered estimates of an edge integral over the disk",
-              {"map", "mean P²/4πA", "max P²/4πA", "estimate variance", "mean error"}, {}};
+              {"map", "mean P²/4πA", "max P²/4πA", "estimate variance", "mean error"},
+              {}};
   std::vector<double> variances;
   for (const auto& [name, label] : maps) {
     const auto warp = make_warp(name, no_params);
     const auto mapped = warp_sample(*warp, grid.data.get(), n);
     std::vector<double> mx(n), my(n);
     for (std::size_t k = 0; k < n; ++k) mx[k] = mapped[2 * k], my[k] = mapped[2 * k + 1];
-    panels.push_back({{"title", formulas.at(label)}, {"x", mx}, {"y", my}, {"color", stratum}, {"disk", true},
+    panels.push_back({{"title", formulas.at(label)},
+                      {"x", mx},
+                      {"y", my},
+                      {"color", stratum},
+                      {"disk", true},
                       {"lines", warped_grid_lines(*warp, cells, 64)}});
 
     const Compactness compactness = strata_compactness(*warp, cells);
@@ -144,8 +152,10 @@ Section disk_section(SectionContext& context) {
     variances.push_back(variance);
     table.rows.push_back({label, format_number(compactness.mean), format_number(compactness.max),
                           format_number(variance), format_number(mean - exact)});
-    section.numbers[label] = {{"compactness_mean", compactness.mean}, {"compactness_max", compactness.max},
-                              {"variance", variance}, {"mean_error", mean - exact}};
+    section.numbers[label] = {{"compactness_mean", compactness.mean},
+                              {"compactness_max", compactness.max},
+                              {"variance", variance},
+                              {"mean_error", mean - exact}};
   }
   section.numbers["exact"] = exact;
   section.numbers["runs"] = runs;

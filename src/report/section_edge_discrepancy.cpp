@@ -91,8 +91,8 @@ std::vector<GridPattern> standard_patterns() {
       {"1 sample: the subpixel next to the centre", {{4, 4}}},
       {"2 samples on a diagonal", {{2, 2}, {5, 5}}},
       {"4 samples, ordered 2×2 grid", {{2, 2}, {5, 2}, {2, 5}, {5, 5}}},
-      {"4 samples, rotated grid", {from_sixteenths(3, 5), from_sixteenths(-5, 3), from_sixteenths(-3, -5),
-                                   from_sixteenths(5, -3)}},
+      {"4 samples, rotated grid",
+       {from_sixteenths(3, 5), from_sixteenths(-5, 3), from_sixteenths(-3, -5), from_sixteenths(5, -3)}},
   };
   // The Direct3D 10.1 / Vulkan standard 8× positions, in 1/16 pixel from the centre.
   const int d3d[8][2] = {{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}};
@@ -197,11 +197,12 @@ Section edge_discrepancy_section(SectionContext& context) {
   }
   std::sort(patterns.begin(), patterns.end(),
             [](const GridPattern& a, const GridPattern& b) { return a.cells.size() < b.cells.size(); });
-  Table grid_table{"Exact edge discrepancy of multisampling patterns on the 8×8 subpixel grid (samples at subpixel "
-                   "centres)",
-                   {"pattern", "subpixels (column, row)", "edge discrepancy", "lower bound 1/(2N)",
-                    "horizontal and vertical edges only"},
-                   {}};
+  Table grid_table{
+      "Exact edge discrepancy of multisampling patterns on the 8×8 subpixel grid (samples at subpixel "
+      "centres)",
+      {"pattern", "subpixels (column, row)", "edge discrepancy", "lower bound 1/(2N)",
+       "horizontal and vertical edges only"},
+      {}};
   nlohmann::json panels = nlohmann::json::array();
   for (const GridPattern& pattern : patterns) {
     const std::vector<double> xy = grid_points(pattern.cells);
@@ -210,11 +211,15 @@ Section edge_discrepancy_section(SectionContext& context) {
     const std::size_t n = pattern.cells.size();
     std::string cells;
     for (const auto& [c, r] : pattern.cells) cells += fmt::format("{}({}, {})", cells.empty() ? "" : " ", c, r);
-    grid_table.rows.push_back({pattern.name, cells, format_number(d.value), format_number(0.5 / n),
-                               format_number(axis)});
-    section.numbers["grid_patterns"].push_back({{"name", pattern.name}, {"n", n}, {"cells", pattern.cells},
-                                                {"edge_discrepancy", d.value}, {"line", line_json(d.line)},
-                                                {"lower_bound", 0.5 / n}, {"axis_aligned", axis}});
+    grid_table.rows.push_back(
+        {pattern.name, cells, format_number(d.value), format_number(0.5 / n), format_number(axis)});
+    section.numbers["grid_patterns"].push_back({{"name", pattern.name},
+                                                {"n", n},
+                                                {"cells", pattern.cells},
+                                                {"edge_discrepancy", d.value},
+                                                {"line", line_json(d.line)},
+                                                {"lower_bound", 0.5 / n},
+                                                {"axis_aligned", axis}});
     panels.push_back(panel_of(fmt::format("{}\nD = {}", pattern.name, format_number(d.value)), xy, d.line, grid));
   }
   section.numbers["searched_patterns"] = searched;
@@ -225,20 +230,18 @@ Section edge_discrepancy_section(SectionContext& context) {
   section.tables.push_back(std::move(grid_table));
 
   // The lecture's other patterns.
-  const std::vector<std::uint64_t> counts = context.quick() ? std::vector<std::uint64_t>{16, 64}
-                                                            : std::vector<std::uint64_t>{16, 256};
+  const std::vector<std::uint64_t> counts =
+      context.quick() ? std::vector<std::uint64_t>{16, 64} : std::vector<std::uint64_t>{16, 256};
   const unsigned runs = context.quick() ? 6 : 24;
-  const std::vector<sa::SamplerChoice> lecture{{"random", "", {}},
-                                               {"jittered", "", {}},
-                                               {"n-rooks", "", {}},
-                                               {"poisson-disk", "", {{"periodic", "1"}}},
-                                               {"zaremba", "none", {}},
-                                               {"hammersley", "none", {}},
+  const std::vector<sa::SamplerChoice> lecture{{"random", "", {}},      {"jittered", "", {}},
+                                               {"n-rooks", "", {}},     {"poisson-disk", "", {{"periodic", "1"}}},
+                                               {"zaremba", "none", {}}, {"hammersley", "none", {}},
                                                {"sobol", "owen", {}}};
   Table pattern_table{fmt::format("Exact edge discrepancy of the lecture's patterns: mean ± standard error over {} "
                                   "realizations (one set for a deterministic pattern)",
                                   runs),
-                      {"pattern"}, {}};
+                      {"pattern"},
+                      {}};
   for (const auto n : counts) pattern_table.header.push_back(fmt::format("N = {}", n));
   pattern_table.header.push_back("lower bound 1/(2N) at the largest N");
   nlohmann::json lecture_panels = nlohmann::json::array();
@@ -252,9 +255,9 @@ Section edge_discrepancy_section(SectionContext& context) {
       section.numbers["lecture_patterns"][sampler_spec(choice)].push_back(
           {{"n", n}, {"mean", m.mean}, {"standard_error", m.error}, {"line", line_json(m.line)}});
       if (n == counts.front())
-        lecture_panels.push_back(panel_of(
-            fmt::format("{}, N = {}\nD = {}", capitalized(sampler_name(choice)), n, format_number(m.mean)),
-            m.example, m.line, 0));
+        lecture_panels.push_back(
+            panel_of(fmt::format("{}, N = {}\nD = {}", capitalized(sampler_name(choice)), n, format_number(m.mean)),
+                     m.example, m.line, 0));
     }
     row.push_back(format_number(0.5 / double(counts.back())));
     pattern_table.rows.push_back(std::move(row));
@@ -275,8 +278,9 @@ Section edge_discrepancy_section(SectionContext& context) {
       if (p["name"].get<std::string>().rfind(prefix, 0) == 0) return p;
     throw std::logic_error("edge-discrepancy section: no pattern " + prefix);
   };
-  const auto one = value_of("1 sample:"), ordered = value_of("4 samples, ordered"), rotated = value_of("4 samples, rotated"),
-             d3d = value_of("8 samples, Direct3D"), best8 = value_of("8 samples, the best");
+  const auto one = value_of("1 sample:"), ordered = value_of("4 samples, ordered"),
+             rotated = value_of("4 samples, rotated"), d3d = value_of("8 samples, Direct3D"),
+             best8 = value_of("8 samples, the best");
   section.text.push_back(
       "A line ℓ through a pixel cuts it into two parts; D(ℓ) is the difference between the fraction of the "
       "pixel's samples on one side and that side's area, and the edge discrepancy is its largest value over every "
@@ -289,7 +293,8 @@ Section edge_discrepancy_section(SectionContext& context) {
       "continuously while the sample count jumps by whole samples. With one sample the error reaches {} (an edge "
       "either covers the sample or not); on the 8×8 grid the best patterns of 2, 4 and 8 samples (found by "
       "searching all {} N-rooks placements) reach {}, {} and {}, against the bounds 0.25, 0.125 and 0.0625.",
-      format_number(one["edge_discrepancy"]), searched, format_number(value_of("2 samples, the best")["edge_discrepancy"]),
+      format_number(one["edge_discrepancy"]), searched,
+      format_number(value_of("2 samples, the best")["edge_discrepancy"]),
       format_number(value_of("4 samples, the best")["edge_discrepancy"]), format_number(best8["edge_discrepancy"])));
   section.text.push_back(fmt::format(
       "For nearly horizontal or vertical edges, the ones that alias most visibly, the ordered 2×2 grid has only "

@@ -193,18 +193,16 @@ Section four_views_section(SectionContext& context) {
   Section section = context.start();
   const Settings settings = context.quick() ? Settings{256, 16, 4, 32} : Settings{1024, 64, 16, 64};
   std::vector<sa::SamplerChoice> samplers;
-  for (const char* text : {"random", "jittered", "n-rooks", "multi-jittered", "poisson-disk",
-                           "poisson-disk(periodic=1)", "best-candidate", "zaremba:cp", "hammersley", "halton",
-                           "sobol:owen", "pmj02"})
+  for (const char* text :
+       {"random", "jittered", "n-rooks", "multi-jittered", "poisson-disk", "poisson-disk(periodic=1)", "best-candidate",
+        "zaremba:cp", "hammersley", "halton", "sobol:owen", "pmj02"})
     samplers.push_back(sa::parse_sampler_choice(text));
   std::vector<std::string> skipped;
   for (const auto& extra : context.extra_samplers()) {
     if (std::any_of(samplers.begin(), samplers.end(), [&](const auto& s) { return label(s) == label(extra); }))
       continue;
-    if (takes(extra, settings.n))
-      samplers.push_back(extra);
-    else
-      skipped.push_back(display_name(extra));
+    if (takes(extra, settings.n)) samplers.push_back(extra);
+    else skipped.push_back(display_name(extra));
   }
 
   std::vector<Views> views;
@@ -228,7 +226,8 @@ Section four_views_section(SectionContext& context) {
   Table table{fmt::format("Four views of each pattern at N = {}: spectrum over {} sets, variance and RMSE over {} "
                           "randomizations, discrepancies averaged over {} sets (rank among the patterns in brackets)",
                           settings.n, settings.realizations, settings.runs, settings.realizations),
-              {"pattern"}, {}};
+              {"pattern"},
+              {}};
   for (const auto& column : columns) table.header.push_back(column.name);
   std::vector<std::vector<int>> column_ranks;
   for (const auto& column : columns) {
@@ -284,9 +283,8 @@ Section four_views_section(SectionContext& context) {
     return column_ranks[column_of(key)][row_of(name)];
   };
   const auto best_sentence = [&](const std::string& what, const std::string& key) {
-    return fmt::format("the lowest {} is {}'s ({}; random {})", what,
-                       sampler_name(samplers[row_of(best_of(key))]), value_of(best_of(key), key),
-                       value_of("random", key));
+    return fmt::format("the lowest {} is {}'s ({}; random {})", what, sampler_name(samplers[row_of(best_of(key))]),
+                       value_of(best_of(key), key), value_of("random", key));
   };
   section.text.push_back(fmt::format(
       "At N = {}, {}, {}, {} and {}.", settings.n,
@@ -331,8 +329,8 @@ Section four_views_section(SectionContext& context) {
   const std::size_t beaten_by_midpoint = std::size_t(std::count_if(
       views.begin(), views.end(), [&](const Views& v) { return v.smooth_rmse > gaussian_rules.midpoint; }));
   const auto beating = [&](double error) {  // patterns whose disk error is below `error`
-    return std::size_t(std::count_if(views.begin(), views.end(),
-                                     [&](const Views& v) { return std::sqrt(v.edge_variance) < error; }));
+    return std::size_t(
+        std::count_if(views.begin(), views.end(), [&](const Views& v) { return std::sqrt(v.edge_variance) < error; }));
   };
   section.text.push_back(fmt::format(
       "The quadrature view's own rules at the same {} points: product Gauss–Legendre integrates the smooth Gaussian "
@@ -359,7 +357,9 @@ Section four_views_section(SectionContext& context) {
   };
   std::string leaders;
   for (std::size_t k = 0; k < std::min<std::size_t>(3, order.size()); ++k)
-    leaders += (k == 0 ? "" : k + 1 == std::min<std::size_t>(3, order.size()) ? " and " : ", ") +
+    leaders += (k == 0                                            ? ""
+                : k + 1 == std::min<std::size_t>(3, order.size()) ? " and "
+                                                                  : ", ") +
                fmt::format("{} ({})", sampler_name(samplers[order[k]]), format_number(mean_rank[order[k]], 2));
   const std::string periodic = "poisson-disk(periodic=1)";
   // Do the (0,2)-sequences outrank both recommended patterns in every
@@ -367,7 +367,8 @@ Section four_views_section(SectionContext& context) {
   bool nets_ahead = true;
   for (const char* key : {"edge_variance", "star", "l2_star", "smooth_rmse"})
     for (const char* net : {"sobol:owen", "pmj02"})
-      nets_ahead = nets_ahead && rank_of(net, key) < rank_of("jittered", key) && rank_of(net, key) < rank_of(periodic, key);
+      nets_ahead =
+          nets_ahead && rank_of(net, key) < rank_of("jittered", key) && rank_of(net, key) < rank_of(periodic, key);
   section.numbers["nets_ahead_outside_the_spectrum"] = nets_ahead;
   section.text.push_back(fmt::format(
       "The lecture recommends jittered and Poisson-disk patterns. Averaged over the seven measures, the best mean "
@@ -401,8 +402,7 @@ Section four_views_section(SectionContext& context) {
   nlohmann::json header = nlohmann::json::array();
   for (const auto& column : columns) header.push_back(column.name);
   section.figures.push_back(context.plot(
-      "report_four_views",
-      {{"patterns", names}, {"views", header}, {"values", chart_values}, {"ranks", chart_ranks}},
+      "report_four_views", {{"patterns", names}, {"views", header}, {"values", chart_values}, {"ranks", chart_ranks}},
       "ranks",
       fmt::format("Each pattern ranked in each view at N = {} (1 = best; colour by rank, the measured value in "
                   "the cell)",

@@ -109,22 +109,34 @@ double image_mean(const render::Image& image) {
   return sum / double(image.rgb.size());
 }
 
-nlohmann::json number_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+nlohmann::json number_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
 
 nlohmann::json method_json(const analysis::MethodResult& m) {
-  return {{"method", m.method}, {"estimate", m.estimate}, {"variance", m.variance},
-          {"variance_stderr", number_or_null(m.variance_stderr)}, {"predicted_variance", number_or_null(m.predicted_variance)},
-          {"seconds_per_sample", m.seconds_per_sample}, {"efficiency", number_or_null(m.efficiency)}};
+  return {{"method", m.method},
+          {"estimate", m.estimate},
+          {"variance", m.variance},
+          {"variance_stderr", number_or_null(m.variance_stderr)},
+          {"predicted_variance", number_or_null(m.predicted_variance)},
+          {"seconds_per_sample", m.seconds_per_sample},
+          {"efficiency", number_or_null(m.efficiency)}};
 }
 
 nlohmann::json comparisons_json(const std::vector<analysis::ImportanceComparison>& list) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& c : list)
-    rows.push_back({{"scene", c.scene}, {"size", c.size}, {"distance", c.distance}, {"exact", c.exact},
-                    {"a", method_json(c.a)}, {"b", method_json(c.b)}, {"variance_ratio", number_or_null(c.variance_ratio)},
+    rows.push_back({{"scene", c.scene},
+                    {"size", c.size},
+                    {"distance", c.distance},
+                    {"exact", c.exact},
+                    {"a", method_json(c.a)},
+                    {"b", method_json(c.b)},
+                    {"variance_ratio", number_or_null(c.variance_ratio)},
                     {"variance_ratio_stderr", number_or_null(c.variance_ratio_stderr)},
                     {"predicted_variance_ratio", number_or_null(c.predicted_variance_ratio)},
-                    {"time_ratio", number_or_null(c.time_ratio)}, {"efficiency_ratio", number_or_null(c.efficiency_ratio)}});
+                    {"time_ratio", number_or_null(c.time_ratio)},
+                    {"efficiency_ratio", number_or_null(c.efficiency_ratio)}});
   return rows;
 }
 
@@ -202,10 +214,10 @@ Section importance_section(SectionContext& context) {
                   "render's error",
                   close.run.samples.front().front()),
       3));
-  section.tables.push_back(repeated_table(
-      close.run, close.rows,
-      fmt::format("The large light, 1 shadow ray per eye ray, against a {}-spp reference ({})",
-                  close.run.reference_spp, interval_method(repeats))));
+  section.tables.push_back(
+      repeated_table(close.run, close.rows,
+                     fmt::format("The large light, 1 shadow ray per eye ray, against a {}-spp reference ({})",
+                                 close.run.reference_spp, interval_method(repeats))));
   section.numbers["light_strategy_large"] = repeated_numbers(close.run, close.rows);
   // The wall under the light: each seed's MSE over the crop.
   std::vector<RowStatistics> wall_rows;
@@ -235,7 +247,8 @@ Section importance_section(SectionContext& context) {
     config.settings.light_samples = 4;
     sky_configs.push_back(config);
   }
-  const Measured hemisphere = measure(sky_scene, sky_configs, scale.few_samples_reference_spp, context.cache_dir(), repeats);
+  const Measured hemisphere =
+      measure(sky_scene, sky_configs, scale.few_samples_reference_spp, context.cache_dir(), repeats);
   section.figures.push_back(image_figure(
       context, repeated_grid(hemisphere.run, {}), "hemisphere",
       fmt::format("Irradiance under a uniform sky (an environment light of radiance 1), {}×{} pixels, {} eye rays × "
@@ -244,10 +257,10 @@ Section importance_section(SectionContext& context) {
                   scale.width, scale.height, hemisphere.run.samples.front().front(),
                   sky_configs.front().settings.light_samples),
       3));
-  section.tables.push_back(repeated_table(
-      hemisphere.run, hemisphere.rows,
-      fmt::format("Uniform vs cosine-weighted irradiance under the sky against a {}-spp reference ({})",
-                  hemisphere.run.reference_spp, interval_method(repeats))));
+  section.tables.push_back(
+      repeated_table(hemisphere.run, hemisphere.rows,
+                     fmt::format("Uniform vs cosine-weighted irradiance under the sky against a {}-spp reference ({})",
+                                 hemisphere.run.reference_spp, interval_method(repeats))));
   section.numbers["hemisphere"] = repeated_numbers(hemisphere.run, hemisphere.rows);
 
   // The directions themselves: a jittered 16×16 grid through each warp.
@@ -259,14 +272,17 @@ Section importance_section(SectionContext& context) {
     request.seed = context.seed();
     const PointSet grid = generate_points("jittered", request);
     nlohmann::json panels = nlohmann::json::array();
-    for (const auto& [name, label] : {std::pair{"hemisphere-uniform", "uniform"}, std::pair{"hemisphere-cosine", "cosine-weighted"}}) {
+    for (const auto& [name, label] :
+         {std::pair{"hemisphere-uniform", "uniform"}, std::pair{"hemisphere-cosine", "cosine-weighted"}}) {
       const auto warp = make_warp(name, WarpParams{});
       const auto d = warp_sample(*warp, grid.data.get(), n);
       std::vector<double> x(n), y(n), z(n);
       double mean_cos = 0;
-      for (std::size_t k = 0; k < n; ++k) x[k] = d[3 * k], y[k] = d[3 * k + 1], z[k] = d[3 * k + 2], mean_cos += z[k] / n;
+      for (std::size_t k = 0; k < n; ++k)
+        x[k] = d[3 * k], y[k] = d[3 * k + 1], z[k] = d[3 * k + 2], mean_cos += z[k] / n;
       panels.push_back({{"title", fmt::format("{}, seen from above", label)}, {"x", x}, {"y", y}, {"disk", true}});
-      panels.push_back({{"title", fmt::format("{}, from the side", label)}, {"x", x}, {"y", z}, {"disk", true}, {"side", true}});
+      panels.push_back(
+          {{"title", fmt::format("{}, from the side", label)}, {"x", x}, {"y", z}, {"disk", true}, {"side", true}});
       section.numbers["directions"][label] = {{"mean_cos_theta", mean_cos}};
     }
     section.figures.push_back(context.plot(
@@ -306,11 +322,12 @@ Section importance_section(SectionContext& context) {
     floor_table.rows.push_back({strategy, std::to_string(samples), format_number(image_mean(image), 4),
                                 format_number(variance), format_number(predicted), format_number(largest)});
     section.numbers["zero_variance"][strategy] = {{"samples", samples},
-                                                 {"mean", image_mean(image)},
-                                                 {"sample_variance", variance},
-                                                 {"predicted_variance", predicted},
-                                                 {"largest_pixel_variance", largest}};
-    floor_panels.push_back(image_panel(image, fmt::format("{} directions\nvariance {}", strategy, format_number(variance))));
+                                                  {"mean", image_mean(image)},
+                                                  {"sample_variance", variance},
+                                                  {"predicted_variance", predicted},
+                                                  {"largest_pixel_variance", largest}};
+    floor_panels.push_back(
+        image_panel(image, fmt::format("{} directions\nvariance {}", strategy, format_number(variance))));
   }
   section.numbers["zero_variance"]["expected_mean"] = (albedo.x + albedo.y + albedo.z) / 3 * sky;
   section.figures.push_back(image_figure(
@@ -329,8 +346,10 @@ Section importance_section(SectionContext& context) {
   request.seed = context.seed();
   request.threads = context.threads();
   const analysis::ImportanceStudy study = analysis::run_importance_study(request);
-  const nlohmann::json study_data = {{"runs", study.runs}, {"samples", study.samples},
-                                     {"hemisphere", comparisons_json(study.hemisphere)}, {"light", comparisons_json(study.light)}};
+  const nlohmann::json study_data = {{"runs", study.runs},
+                                     {"samples", study.samples},
+                                     {"hemisphere", comparisons_json(study.hemisphere)},
+                                     {"light", comparisons_json(study.light)}};
   section.figures.push_back(context.plot(
       "importance", study_data, "study",
       fmt::format("Irradiance from a square light above a receiver, {} runs × {} samples: variance and efficiency of "
@@ -388,18 +407,19 @@ Section importance_section(SectionContext& context) {
       format_factor(hemisphere.rows.at(1).mse_ratio), time_and_efficiency_text(hemisphere.rows.at(1), "uniform")));
   section.text.push_back(fmt::format(
       "Under a constant sky the integrand L ρ/π cos θ is proportional to the cosine density, so in exact arithmetic "
-      "every cosine-weighted sample equals ρL: over {} samples the measured per-sample variance is {} with cosine-weighted directions (the largest of any "
+      "every cosine-weighted sample equals ρL: over {} samples the measured per-sample variance is {} with "
+      "cosine-weighted directions (the largest of any "
       "pixel {}) against {} with uniform ones (closed form ρ²L²/3 = {}); the mean pixel values are {} and {} "
       "(exact {}).",
       zero["cosine"]["samples"].get<std::uint64_t>(), format_number(zero["cosine"]["sample_variance"]),
       format_number(zero["cosine"]["largest_pixel_variance"]), format_number(zero["uniform"]["sample_variance"]),
       format_number(zero["uniform"]["predicted_variance"]), format_number(zero["cosine"]["mean"], 4),
       format_number(zero["uniform"]["mean"], 4), format_number(zero["expected_mean"], 4)));
-  section.text.push_back(fmt::format("Intervals: {}{}.", interval_method(repeats),
-                                     light_repeats == repeats
-                                         ? std::string()
-                                         : fmt::format(" ({} seeds for the slide's renders of 400 light samples per pixel)",
-                                                       light_repeats)));
+  section.text.push_back(fmt::format(
+      "Intervals: {}{}.", interval_method(repeats),
+      light_repeats == repeats
+          ? std::string()
+          : fmt::format(" ({} seeds for the slide's renders of 400 light samples per pixel)", light_repeats)));
   section.try_it = {"stratum compare --builtin light-strategy --width 64 --height 64",
                     "stratum compare --builtin hemisphere --width 64 --height 64",
                     "stratum study importance --plot importance.png"};

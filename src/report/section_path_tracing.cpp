@@ -40,7 +40,8 @@ Section path_tracing_section(SectionContext& context) {
   const RepeatedComparison timed_run = run_repeated_comparison(scene, timed, timed_options, repeats);
   const std::vector<RowStatistics> time_stats = row_statistics(timed_run, timed_run.mse);
 
-  const std::uint32_t complete_spp = configs.at(0).settings.sampler.spp, incomplete_spp = configs.at(1).settings.sampler.spp;
+  const std::uint32_t complete_spp = configs.at(0).settings.sampler.spp,
+                      incomplete_spp = configs.at(1).settings.sampler.spp;
   const std::uint32_t complete_shadow = configs.at(0).settings.light_samples;
   const std::uint32_t incomplete_shadow = configs.at(1).settings.light_samples;
   nlohmann::json panels = nlohmann::json::array();
@@ -59,10 +60,10 @@ Section path_tracing_section(SectionContext& context) {
                   incomplete_spp, incomplete_shadow, format_seconds(timed_options.equal_time)),
       3));
   const std::string method = interval_method(repeats);
-  section.tables.push_back(repeated_table(
-      rays, ray_stats,
-      fmt::format("At equal ray count ({} shadow rays per pixel), against a {}-spp reference ({})",
-                  complete_spp * complete_shadow, rays.reference_spp, method)));
+  section.tables.push_back(
+      repeated_table(rays, ray_stats,
+                     fmt::format("At equal ray count ({} shadow rays per pixel), against a {}-spp reference ({})",
+                                 complete_spp * complete_shadow, rays.reference_spp, method)));
   section.tables.push_back(repeated_table(
       timed_run, time_stats,
       fmt::format("At equal time ({} per render, the incomplete render's median time at equal rays; eye rays per "
@@ -82,7 +83,7 @@ Section path_tracing_section(SectionContext& context) {
   section.numbers["equal_time_winner"] = incomplete_wins ? "incomplete" : complete_wins ? "complete" : "neither";
   section.numbers["equal_time_decided_by"] = at_time.time_resolved ? "efficiency_ratio" : "mse_ratio";
   const RatioInterval& ray_mse = ray_stats.at(1).mse_ratio;
-  const std::string at_rays = ray_mse.low > 1   ? "the incomplete render has the lower MSE"
+  const std::string at_rays = ray_mse.low > 1    ? "the incomplete render has the lower MSE"
                               : ray_mse.high < 1 ? "the complete render has the lower MSE"
                                                  : "neither has a lower MSE beyond the noise";
   const std::string measure =
@@ -94,7 +95,7 @@ Section path_tracing_section(SectionContext& context) {
   section.text.push_back(fmt::format(
       "At equal time, {}: {}. At equal ray count {} (ratio complete/incomplete {}), but that is not equal cost: the "
       "incomplete render took {} as long.",
-      incomplete_wins  ? "incomplete path tracing wins"
+      incomplete_wins ? "incomplete path tracing wins"
       : complete_wins ? "complete path tracing wins"
                       : "neither wins beyond the noise",
       measure, at_rays, format_interval(ray_mse), format_factor(ray_stats.at(1).time_ratio)));
@@ -105,8 +106,8 @@ Section path_tracing_section(SectionContext& context) {
       "complete render reaches {} eye rays per pixel (in passes of {} × {}) and the incomplete one {}.",
       complete_spp * complete_shadow, complete_spp, complete_shadow, incomplete_spp * incomplete_shadow, incomplete_spp,
       incomplete_shadow, format_number(double(incomplete_spp) / complete_spp), format_seconds(timed_options.equal_time),
-      median(std::vector<double>(timed_run.samples[0].begin(), timed_run.samples[0].end())), complete_spp, complete_shadow,
-      median(std::vector<double>(timed_run.samples[1].begin(), timed_run.samples[1].end()))));
+      median(std::vector<double>(timed_run.samples[0].begin(), timed_run.samples[0].end())), complete_spp,
+      complete_shadow, median(std::vector<double>(timed_run.samples[1].begin(), timed_run.samples[1].end()))));
   section.text.push_back("Intervals: " + method + ".");
   section.try_it = {"stratum compare --builtin path --width 64 --height 64",
                     "stratum compare --builtin path --width 64 --height 64 --equal-time 2"};

@@ -43,10 +43,10 @@ struct PublishedRow {
 };
 constexpr std::size_t published_counts[3] = {16, 256, 1600};
 constexpr PublishedRow mitchell_1992[] = {{"zaremba", {0.0504, 0.00478, 0.00111}},
-                                         {"jittered", {0.0538, 0.00595, 0.00146}},
-                                         {"poisson-disk", {0.0613, 0.00767, 0.00241}},
-                                         {"n-rooks", {0.0637, 0.0123, 0.00488}},
-                                         {"random", {0.0924, 0.0224, 0.00866}}};
+                                          {"jittered", {0.0538, 0.00595, 0.00146}},
+                                          {"poisson-disk", {0.0613, 0.00767, 0.00241}},
+                                          {"n-rooks", {0.0637, 0.0123, 0.00488}},
+                                          {"random", {0.0924, 0.0224, 0.00866}}};
 
 }  // namespace
 
@@ -77,9 +77,11 @@ namespace {
 /// Our values beside Mitchell's: the table, report.json's "mitchell_1992"
 /// and the sentences on where they differ.
 void add_published_comparison(Section& section, double expected_c) {
-  Table table{"Beside the lecture: Mitchell's (1992) random-edge discrepancy as printed, ours (mean of the "
-              "realizations) and the ratio ours / Mitchell's",
-              {"pattern"}, {}};
+  Table table{
+      "Beside the lecture: Mitchell's (1992) random-edge discrepancy as printed, ours (mean of the "
+      "realizations) and the ratio ours / Mitchell's",
+      {"pattern"},
+      {}};
   for (std::size_t n : published_counts)
     table.header.insert(table.header.end(), {fmt::format("N = {}: ours", n), "Mitchell", "ratio"});
   nlohmann::json& published = section.numbers["mitchell_1992"];
@@ -91,8 +93,8 @@ void add_published_comparison(Section& section, double expected_c) {
     for (std::size_t k = 0; k < 3; ++k) {
       const double ours = entry["cells"][k]["rms"], ratio = ours / row.values[k];
       cells.insert(cells.end(), {format_number(ours), format_number(row.values[k]), format_number(ratio)});
-      published[row.id].push_back({{"n", published_counts[k]}, {"mitchell", row.values[k]}, {"ours", ours},
-                                   {"ratio", ratio}});
+      published[row.id].push_back(
+          {{"n", published_counts[k]}, {"mitchell", row.values[k]}, {"ours", ours}, {"ratio", ratio}});
       if (k == 0) low = std::min(low, ratio), high = std::max(high, ratio);
     }
     ours_16.push_back({entry["cells"][0]["rms"].get<double>(), entry["label"].get<std::string>()});
@@ -120,7 +122,8 @@ void add_published_comparison(Section& section, double expected_c) {
   section.numbers["order_differs_at_16"] = !swaps.empty();
   // Mitchell's random column as c/√N: the c his line measure implies.
   double implied = 0;
-  for (std::size_t k = 0; k < 3; ++k) implied += mitchell_1992[4].values[k] * std::sqrt(double(published_counts[k])) / 3;
+  for (std::size_t k = 0; k < 3; ++k)
+    implied += mitchell_1992[4].values[k] * std::sqrt(double(published_counts[k])) / 3;
   section.numbers["mitchell_random_constant"] = implied;
   section.text.push_back(fmt::format(
       "Beside Mitchell's published values, ours at N = 16 are {}–{}× his{}. For independent points the expected "
@@ -171,7 +174,8 @@ Section patterns_section(SectionContext& context) {
   Table table{fmt::format("Random-edge discrepancy: RMS over {} random lines, mean ± standard error over {} "
                           "realizations; spectrum at N = {} (radial power, 1 = white noise)",
                           options.lines, options.realizations, study.spectra.front().n),
-              {"pattern"}, {}};
+              {"pattern"},
+              {}};
   for (std::size_t n : options.counts) table.header.push_back(fmt::format("N = {}", n));
   table.header.insert(table.header.end(), {"slope of log RMS", "low-frequency power", "spectral peak"});
   double lowest = INFINITY;
@@ -184,8 +188,13 @@ Section patterns_section(SectionContext& context) {
     std::vector<double> n, rms, error;
     for (std::size_t requested : options.counts) {
       const auto& cell = study.cell(id, requested);
-      cells.push_back({{"requested", cell.requested}, {"n", cell.n}, {"rms", cell.rms.mean}, {"rms_se", cell.rms.error},
-                       {"mean", cell.mean.mean}, {"mean_se", cell.mean.error}, {"max", cell.max.mean},
+      cells.push_back({{"requested", cell.requested},
+                       {"n", cell.n},
+                       {"rms", cell.rms.mean},
+                       {"rms_se", cell.rms.error},
+                       {"mean", cell.mean.mean},
+                       {"mean_se", cell.mean.error},
+                       {"max", cell.max.mean},
                        {"max_se", cell.max.error}});
       row.push_back(fmt::format("{} ± {}{}", format_number(cell.rms.mean), format_number(cell.rms.error, 2),
                                 cell.n != requested ? fmt::format(" (N = {})", cell.n) : ""));
@@ -199,12 +208,17 @@ Section patterns_section(SectionContext& context) {
     const SpectrumSummary summary = summarize(spectrum);
     row.insert(row.end(), {format_number(fit.slope), format_number(summary.low), format_number(summary.peak)});
     table.rows.push_back(std::move(row));
-    patterns.push_back({{"label", pattern.label}, {"sampler", pattern.sampler}, {"cells", cells},
+    patterns.push_back({{"label", pattern.label},
+                        {"sampler", pattern.sampler},
+                        {"cells", cells},
                         {"spectrum", {{"n", spectrum.n}, {"frequency", spectrum.frequency}, {"power", spectrum.power}}},
                         {"example", spectrum.example}});
     lines.push_back({{"label", pattern.label}, {"x", n}, {"y", rms}, {"yerr", error}});
-    section.numbers["patterns"][id] = {{"label", pattern.label}, {"cells", cells}, {"slope", fit.slope},
-                                       {"slope_se", fit.slope_standard_error}, {"low_frequency_power", summary.low},
+    section.numbers["patterns"][id] = {{"label", pattern.label},
+                                       {"cells", cells},
+                                       {"slope", fit.slope},
+                                       {"slope_se", fit.slope_standard_error},
+                                       {"low_frequency_power", summary.low},
                                        {"spectral_peak", summary.peak}};
   }
   section.numbers["lines"] = options.lines;
@@ -226,8 +240,12 @@ Section patterns_section(SectionContext& context) {
       fmt::format("Each pattern (one realization, N = {}) above its radially averaged power spectrum (mean of {} "
                   "realizations; dashed: white noise)",
                   study.spectra.front().n, options.realizations)));
-  nlohmann::json panel = {{"title", "random-edge discrepancy against N"}, {"xlabel", "N"},
-                          {"ylabel", "RMS over random edges"}, {"xlog", true}, {"ylog", true}, {"series", lines}};
+  nlohmann::json panel = {{"title", "random-edge discrepancy against N"},
+                          {"xlabel", "N"},
+                          {"ylabel", "RMS over random edges"},
+                          {"xlog", true},
+                          {"ylog", true},
+                          {"series", lines}};
   nlohmann::json line_plot = {{"panels", nlohmann::json::array({panel})}};
   section.figures.push_back(context.plot(
       "report_lines", line_plot, "convergence",
@@ -239,19 +257,20 @@ Section patterns_section(SectionContext& context) {
   const auto& random_cells = random["cells"];
   section.text.push_back(fmt::format(
       "Mitchell's experiment: the RMS discrepancy of {} random edges, averaged over {} realizations per pattern and "
-      "N. Random points converge with a fitted slope of log RMS on log N of {} (± {}; for independent points E[D²] is exactly c/N, "
+      "N. Random points converge with a fitted slope of log RMS on log N of {} (± {}; for independent points E[D²] is "
+      "exactly c/N, "
       "so ≈ −1/2 is expected), from {} at N = 16 to {} at N = 1600.",
       options.lines, options.realizations, format_number(random_slope), format_number(random_se),
       format_number(random_cells[0]["rms"].get<double>()), format_number(random_cells[2]["rms"].get<double>())));
-  section.text.push_back(fmt::format(
-      "At N = 1600 the lowest random-edge discrepancy is {}'s ({}), {}× below random's.", lowest_label,
-      format_number(lowest), format_number(random_cells[2]["rms"].get<double>() / lowest)));
+  section.text.push_back(fmt::format("At N = 1600 the lowest random-edge discrepancy is {}'s ({}), {}× below random's.",
+                                     lowest_label, format_number(lowest),
+                                     format_number(random_cells[2]["rms"].get<double>() / lowest)));
   const auto peak_of = [&](const char* id) { return section.numbers["patterns"][id]["spectral_peak"].get<double>(); };
   section.text.push_back(fmt::format(
       "At N = {} the largest radial power in the spectrum is {} for Zaremba, {} for jittered, "
       "{} for Poisson disk and {} for random (1 is white noise; a tall spike is regular structure that aliases).",
-      study.spectra.front().n, format_number(peak_of("zaremba")), format_number(peak_of("jittered")), format_number(peak_of("poisson-disk")),
-      format_number(peak_of("random"))));
+      study.spectra.front().n, format_number(peak_of("zaremba")), format_number(peak_of("jittered")),
+      format_number(peak_of("poisson-disk")), format_number(peak_of("random"))));
   section.try_it = {"stratum study mitchell --sampler sobol:owen --plot mitchell.png"};
   return section;
 }

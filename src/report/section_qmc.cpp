@@ -55,7 +55,8 @@ bool accepts(const sa::SamplerChoice& choice, std::uint64_t n) {
 /// about the radix point, and φ2(i) from the library.
 Table radical_inverse_table(nlohmann::json& numbers) {
   Table table{"The radical inverse φ2(i): the binary digits of i mirrored about the radix point",
-              {"i", "i in base 2", "mirrored", "φ2(i)", "φ2(i) × 16", "the slide"}, {}};
+              {"i", "i in base 2", "mirrored", "φ2(i)", "φ2(i) × 16", "the slide"},
+              {}};
   bool agrees = true;
   for (std::uint64_t i = 0; i < 16; ++i) {
     std::string binary, mirrored = "0.";
@@ -70,8 +71,8 @@ Table radical_inverse_table(nlohmann::json& numbers) {
     agrees = agrees && phi == mirrored_value;
     // The slide's worked example, i = 4 = 100₂, prints 3/8; mirroring gives 0.001₂ = 1/8.
     const std::string slide = i == 4 ? "3/8: erratum, it is 1/8" : "";
-    table.rows.push_back({std::to_string(i), binary + "₂", mirrored + "₂", fmt::format("{}", phi),
-                          fmt::format("{}", phi * 16), slide});
+    table.rows.push_back(
+        {std::to_string(i), binary + "₂", mirrored + "₂", fmt::format("{}", phi), fmt::format("{}", phi * 16), slide});
     numbers["phi2"].push_back(phi);
   }
   numbers["phi2_equals_mirrored_digits"] = agrees;
@@ -129,7 +130,8 @@ nlohmann::json reference(const Curve& curve, const std::string& label, double (*
 
 nlohmann::json series(const Curve& curve) {
   nlohmann::json s = {{"label", fmt::format("{} (slope {})", capitalized(curve.name), format_number(curve.fit.slope))},
-                      {"x", curve.n}, {"y", curve.mean}};
+                      {"x", curve.n},
+                      {"y", curve.mean}};
   if (std::any_of(curve.error.begin(), curve.error.end(), [](double e) { return e > 0; })) s["yerr"] = curve.error;
   return s;
 }
@@ -171,11 +173,13 @@ Section qmc_section(SectionContext& context) {
   // Star discrepancy against N, in half-octave steps.
   std::vector<std::uint64_t> counts;
   const double largest = context.quick() ? 2048 : 16384;
-  for (double n = 16; n <= largest * 1.001; n *= std::sqrt(2.0)) counts.push_back(static_cast<std::uint64_t>(std::lround(n)));
+  for (double n = 16; n <= largest * 1.001; n *= std::sqrt(2.0))
+    counts.push_back(static_cast<std::uint64_t>(std::lround(n)));
   const unsigned runs = context.quick() ? 6 : 16;
   std::vector<sa::SamplerChoice> compared{hammersley, halton, random};
   for (const auto& extra : context.extra_samplers())
-    if (std::none_of(compared.begin(), compared.end(), [&](const auto& c) { return choice_label(c) == choice_label(extra); }))
+    if (std::none_of(compared.begin(), compared.end(),
+                     [&](const auto& c) { return choice_label(c) == choice_label(extra); }))
       compared.push_back(extra);
   std::vector<Curve> curves;
   for (const auto& choice : compared)
@@ -187,37 +191,51 @@ Section qmc_section(SectionContext& context) {
     if (curve.n.size() >= 2) all.push_back(series(curve));
   all.push_back(reference(curves[2], "c·N^(−1/2)", inverse_sqrt, c_random));
   nlohmann::json plot_panels = {
-      {{"title", "Hammersley against c·log N / N (d = 2)"}, {"xlabel", "N"}, {"ylabel", "star discrepancy D*"},
-       {"xlog", true}, {"ylog", true},
+      {{"title", "Hammersley against c·log N / N (d = 2)"},
+       {"xlabel", "N"},
+       {"ylabel", "star discrepancy D*"},
+       {"xlog", true},
+       {"ylog", true},
        {"series", {series(curves[0]), reference(curves[0], "c·log N / N", log_over_n, c_hammersley)}}},
-      {{"title", "Halton against c·log² N / N (d = 2)"}, {"xlabel", "N"}, {"ylabel", "star discrepancy D*"},
-       {"xlog", true}, {"ylog", true},
+      {{"title", "Halton against c·log² N / N (d = 2)"},
+       {"xlabel", "N"},
+       {"ylabel", "star discrepancy D*"},
+       {"xlog", true},
+       {"ylog", true},
        {"series", {series(curves[1]), reference(curves[1], "c·log² N / N", log2_over_n, c_halton)}}},
-      {{"title", fmt::format("every pattern (random: mean ± s.e. of {} sets)", runs)}, {"xlabel", "N"},
-       {"ylabel", "star discrepancy D*"}, {"xlog", true}, {"ylog", true}, {"series", all}}};
+      {{"title", fmt::format("every pattern (random: mean ± s.e. of {} sets)", runs)},
+       {"xlabel", "N"},
+       {"ylabel", "star discrepancy D*"},
+       {"xlog", true},
+       {"ylog", true},
+       {"series", all}}};
   section.figures.push_back(context.plot(
       "report_lines", {{"columns", 3}, {"panels", plot_panels}}, "star-vs-n",
       "Exact star discrepancy against N; dotted: the rates c·log N / N, c·log² N / N and c·N^(−1/2), each scaled "
       "to its pattern's data by least squares in log space (c = exp(mean(log D* − log rate)))"));
 
-  Table slopes{"Star discrepancy against N: fitted slope of log D* on log N", {"pattern", "N range", "slope", "± s.e.",
-                                                                                "D* at largest N"}, {}};
+  Table slopes{"Star discrepancy against N: fitted slope of log D* on log N",
+               {"pattern", "N range", "slope", "± s.e.", "D* at largest N"},
+               {}};
   for (const auto& curve : curves) {
     if (curve.n.size() < 2) {  // an extra that takes fewer than two of the counts
       section.numbers["skipped"].push_back(curve.label);
       continue;
     }
-    slopes.rows.push_back({capitalized(curve.name) + " `" + curve.label + "`", fmt::format("{}–{}", curve.n.front(), curve.n.back()),
-                           format_number(curve.fit.slope), format_number(curve.fit.slope_standard_error),
-                           format_number(curve.mean.back())});
-    section.numbers["curves"][curve.label] = {{"n", curve.n}, {"star", curve.mean}, {"standard_error", curve.error},
-                                              {"slope", curve.fit.slope}, {"slope_se", curve.fit.slope_standard_error}};
+    slopes.rows.push_back({capitalized(curve.name) + " `" + curve.label + "`",
+                           fmt::format("{}–{}", curve.n.front(), curve.n.back()), format_number(curve.fit.slope),
+                           format_number(curve.fit.slope_standard_error), format_number(curve.mean.back())});
+    section.numbers["curves"][curve.label] = {{"n", curve.n},
+                                              {"star", curve.mean},
+                                              {"standard_error", curve.error},
+                                              {"slope", curve.fit.slope},
+                                              {"slope_se", curve.fit.slope_standard_error}};
   }
   section.tables.push_back(std::move(slopes));
   const double spread_hammersley = ratio_spread(curves[0], log_over_n);
   const double spread_halton = ratio_spread(curves[1], log2_over_n);
-  section.numbers["reference_scale"] = {{"hammersley_log_n_over_n", c_hammersley},
-                                        {"halton_log2_n_over_n", c_halton}, {"random_inverse_sqrt", c_random}};
+  section.numbers["reference_scale"] = {
+      {"hammersley_log_n_over_n", c_hammersley}, {"halton_log2_n_over_n", c_halton}, {"random_inverse_sqrt", c_random}};
   section.numbers["ratio_spread"] = {{"hammersley", spread_hammersley}, {"halton", spread_halton}};
   section.numbers["runs"] = runs;
 

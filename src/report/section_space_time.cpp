@@ -81,7 +81,8 @@ void screen_space_error(SectionContext& context, Section& section) {
   for (std::uint32_t spp : {1u, 4u})
     for (const char* sampler : {"sobol", "zsobol"}) {
       render::CompareConfig config;
-      config.label = fmt::format("{}, {} spp", std::string(sampler) == "sobol" ? "per-pixel Owen–Sobol'" : "ZSobol", spp);
+      config.label =
+          fmt::format("{}, {} spp", std::string(sampler) == "sobol" ? "per-pixel Owen–Sobol'" : "ZSobol", spp);
       config.settings.sampler.sampler = sampler;
       config.settings.sampler.spp = spp;
       config.settings.sampler.seed = context.seed();
@@ -105,15 +106,16 @@ void screen_space_error(SectionContext& context, Section& section) {
       for (int c = 0; c < 3; ++c) error.rgb[3 * p + c] = 0.5 + e[p];
     panels.push_back(image_panel(error, fmt::format("{} (MSE {})", row.label, format_number(row.mse))));
     series.push_back({{"label", row.label}, {"x", row.error_radial_frequency}, {"y", row.error_radial_power}});
-    table.rows.push_back({row.label, std::to_string(row.samples), format_number(row.mse),
-                          format_number(row.low_frequency_power)});
+    table.rows.push_back(
+        {row.label, std::to_string(row.samples), format_number(row.mse), format_number(row.low_frequency_power)});
     section.numbers["screen_space_error"]["rows"][row.label] = {
         {"spp", row.samples}, {"mse", row.mse}, {"low_frequency_power", row.low_frequency_power}};
   }
   section.numbers["screen_space_error"]["width"] = side;
   section.numbers["screen_space_error"]["reference_spp"] = comparison.reference_spp;
   const auto& front = comparison.rows.front().error_radial_frequency;
-  series.push_back({{"label", "white noise"}, {"x", {front.front(), front.back()}}, {"y", {1.0, 1.0}}, {"reference", true}});
+  series.push_back(
+      {{"label", "white noise"}, {"x", {front.front(), front.back()}}, {"y", {1.0, 1.0}}, {"reference", true}});
   section.figures.push_back(image_figure(
       context, panels, "screen-space-error",
       fmt::format("The error (render − reference, luminance; grey is zero) of a floor in soft shadow, {0}×{0} pixels, "
@@ -123,8 +125,13 @@ void screen_space_error(SectionContext& context, Section& section) {
       4));
   section.figures.push_back(context.plot(
       "report_lines",
-      {{"panels", {{{"title", "Radial power spectrum of the error"}, {"xlabel", "frequency (cycles per pixel)"},
-                    {"ylabel", "power (white noise = 1)"}, {"xlog", false}, {"ylog", true}, {"series", series}}}}},
+      {{"panels",
+        {{{"title", "Radial power spectrum of the error"},
+          {"xlabel", "frequency (cycles per pixel)"},
+          {"ylabel", "power (white noise = 1)"},
+          {"xlog", false},
+          {"ylog", true},
+          {"series", series}}}}},
       "error-spectra",
       "The errors' power by frequency, normalized so that white noise is 1: ZSobol moves the error's power out of the "
       "low frequencies a viewer (or a denoiser) sees, into the high ones"));
@@ -138,13 +145,15 @@ void screen_space_error(SectionContext& context, Section& section) {
       "moved to the frequencies the eye and a denoiser filter out — a pixel's neighbours in ZSobol's Morton order "
       "take the next blocks of one sequence, so a 2×2 block of pixels holds one stratified set: nearby in space, "
       "far apart in the sequence, the spatial form of Cook's rule.",
-      format_number(rows[0].low_frequency_power), format_number(rows[1].low_frequency_power), format_number(rows[0].mse),
-      format_number(rows[1].mse), format_number(rows[2].low_frequency_power), format_number(rows[3].low_frequency_power)));
+      format_number(rows[0].low_frequency_power), format_number(rows[1].low_frequency_power),
+      format_number(rows[0].mse), format_number(rows[1].mse), format_number(rows[2].low_frequency_power),
+      format_number(rows[3].low_frequency_power)));
   section.text.push_back(
       "Across frames of an animation (stratum render --frame K) the same rule runs in time: a progressive sampler's "
       "frame K takes each pixel's next block of spp samples of its sequence, so frames 0…K−1 together are "
       "exactly one frame at K·spp (tested) and converge as the sequence does, while patterns and the blue-noise "
-      "samplers take a fresh seed per frame (independent frames). Cook's and the magic square's assignment, nearby in space and far apart in time within one pixel's "
+      "samplers take a fresh seed per frame (independent frames). Cook's and the magic square's assignment, nearby in "
+      "space and far apart in time within one pixel's "
       "set, is the special case of one frame.");
 }
 
@@ -276,8 +285,8 @@ Section space_time_section(SectionContext& context) {
   options.reference_spp = scale.reference_spp;
   options.cache_dir = context.cache_dir();
   const unsigned repeats = context.quick() ? 4 : 8;
-  const TimeAssignments box =
-      measure_time_assignments(render::comparison_scene("", true, scale.width, scale.height), configs, options, repeats);
+  const TimeAssignments box = measure_time_assignments(render::comparison_scene("", true, scale.width, scale.height),
+                                                       configs, options, repeats);
   const TimeAssignments close = measure_time_assignments(close_up(scale), configs, options, repeats);
   const auto& comparison = box.comparison;
   const auto& whole = box.whole;
@@ -299,21 +308,20 @@ Section space_time_section(SectionContext& context) {
   section.tables.push_back(repeated_table(
       comparison, whole,
       fmt::format("Motion blur against a {}-spp reference, whole image ({})", comparison.reference_spp, method)));
-  Table region{fmt::format("MSE over the pixels whose value depends on the time assignment: {} of {} in the box, {} "
-                           "of {} in the close-up ({} seeds, 95% t intervals on log ratios)",
-                           moving_count, pixels, close.moving_count, close.pixels, repeats),
-               {"time assignment", "box: MSE on those pixels (mean ± s.e.)", "box: ratio random/this (95% CI)",
-                "close-up: MSE on those pixels", "close-up: ratio random/this (95% CI)",
-                "close-up: whole-image ratio (95% CI)"},
-               {}};
+  Table region{
+      fmt::format("MSE over the pixels whose value depends on the time assignment: {} of {} in the box, {} "
+                  "of {} in the close-up ({} seeds, 95% t intervals on log ratios)",
+                  moving_count, pixels, close.moving_count, close.pixels, repeats),
+      {"time assignment", "box: MSE on those pixels (mean ± s.e.)", "box: ratio random/this (95% CI)",
+       "close-up: MSE on those pixels", "close-up: ratio random/this (95% CI)", "close-up: whole-image ratio (95% CI)"},
+      {}};
   for (std::size_t i = 0; i < configs.size(); ++i)
-    region.rows.push_back({configs[i].label,
-                           format_number(local[i].mse.mean) + " ± " + format_number(local[i].mse.standard_error, 2),
-                           i == 0 ? "1 (baseline)" : format_interval(local[i].mse_ratio),
-                           format_number(close.local[i].mse.mean) + " ± " +
-                               format_number(close.local[i].mse.standard_error, 2),
-                           i == 0 ? "1 (baseline)" : format_interval(close.local[i].mse_ratio),
-                           i == 0 ? "1 (baseline)" : format_interval(close.whole[i].mse_ratio)});
+    region.rows.push_back(
+        {configs[i].label, format_number(local[i].mse.mean) + " ± " + format_number(local[i].mse.standard_error, 2),
+         i == 0 ? "1 (baseline)" : format_interval(local[i].mse_ratio),
+         format_number(close.local[i].mse.mean) + " ± " + format_number(close.local[i].mse.standard_error, 2),
+         i == 0 ? "1 (baseline)" : format_interval(close.local[i].mse_ratio),
+         i == 0 ? "1 (baseline)" : format_interval(close.whole[i].mse_ratio)});
   section.tables.push_back(std::move(region));
   section.numbers["motion_blur"] = time_assignment_numbers(box, configs);
   section.numbers["motion_close_up"] = time_assignment_numbers(close, configs);
@@ -344,8 +352,8 @@ Section space_time_section(SectionContext& context) {
       format_number(whole[0].mse.standard_error, 2), whole_text, moving_count, pixels, local_text));
   std::string close_text;
   for (std::size_t i = 1; i < configs.size(); ++i)
-    close_text += (i == 1 ? "" : " and ") +
-                  fmt::format("{} for {}", format_interval(close.local[i].mse_ratio), configs[i].label);
+    close_text +=
+        (i == 1 ? "" : " and ") + fmt::format("{} for {}", format_interval(close.local[i].mse_ratio), configs[i].label);
   section.text.push_back(fmt::format(
       "In a close-up where the moving sphere fills the frame, {} of the {} pixels depend on time, and the ratio "
       "random/this over them is {}.",
@@ -355,9 +363,10 @@ Section space_time_section(SectionContext& context) {
       "quoted only where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",
       timing, method));
   screen_space_error(context, section);
-  section.try_it = {"stratum compare --builtin time-pattern --width 64 --height 64",
-                    "stratum render scenes/penumbra.json --sampler zsobol --spp 1 --exr z.exr && stratum render "
-                    "scenes/penumbra.json --reference --exr ref.exr && stratum spectrum --image z.exr --reference ref.exr"};
+  section.try_it = {
+      "stratum compare --builtin time-pattern --width 64 --height 64",
+      "stratum render scenes/penumbra.json --sampler zsobol --spp 1 --exr z.exr && stratum render "
+      "scenes/penumbra.json --reference --exr ref.exr && stratum spectrum --image z.exr --reference ref.exr"};
   return section;
 }
 

@@ -110,8 +110,12 @@ nlohmann::json panel(const sa::ConvergenceResult& result, const std::string& tit
                       {"x", x},
                       {"y", predicted},
                       {"dashed", true}});
-  return {{"title", title}, {"xlabel", "N (points per estimate)"}, {"ylabel", "variance of the estimate"},
-          {"xlog", true}, {"ylog", true}, {"series", series}};
+  return {{"title", title},
+          {"xlabel", "N (points per estimate)"},
+          {"ylabel", "variance of the estimate"},
+          {"xlog", true},
+          {"ylog", true},
+          {"series", series}};
 }
 
 nlohmann::json to_numbers(const sa::ConvergenceResult& result) {
@@ -142,19 +146,16 @@ Section stratification_section(SectionContext& context) {
   for (std::uint64_t n = 16; n <= (context.quick() ? 4096u : 262144u); n *= 4) counts.push_back(n);
   const unsigned runs = context.quick() ? 32 : 64;
 
-  std::vector<sa::SamplerChoice> samplers{
-      sa::parse_sampler_choice("random"), sa::parse_sampler_choice("jittered"),
-      sa::parse_sampler_choice("sobol:owen"), sa::parse_sampler_choice("pmj02")};
+  std::vector<sa::SamplerChoice> samplers{sa::parse_sampler_choice("random"), sa::parse_sampler_choice("jittered"),
+                                          sa::parse_sampler_choice("sobol:owen"), sa::parse_sampler_choice("pmj02")};
   std::vector<std::string> skipped, skipped_names;  // specs for report.json, human names for the prose
   for (const auto& extra : context.extra_samplers()) {
     const bool duplicate = std::any_of(samplers.begin(), samplers.end(), [&](const sa::SamplerChoice& s) {
       return s.name == extra.name && s.randomize == extra.randomize;
     });
     if (duplicate) continue;
-    if (takes_counts(extra, counts))
-      samplers.push_back(extra);
-    else
-      skipped.push_back(label(extra)), skipped_names.push_back(named_with_spec(extra));
+    if (takes_counts(extra, counts)) samplers.push_back(extra);
+    else skipped.push_back(label(extra)), skipped_names.push_back(named_with_spec(extra));
   }
 
   sa::ConvergenceRequest request;
@@ -188,23 +189,26 @@ Section stratification_section(SectionContext& context) {
   const auto& jittered_slanted = entry_of(slanted, "jittered");
   for (std::size_t i = 0; i < counts.size(); ++i) {
     const auto side = static_cast<std::uint64_t>(std::llround(std::sqrt(double(counts[i]))));
-    prediction.push_back({{"n", counts[i]},
-                          {"grid", side},
-                          {"edge", axis_predicted[i]},
-                          {"edge_cut_cells", cut_cells(axis_plane, side)},
-                          {"edge_measured_over_predicted", jittered_axis.rows[i].variance / axis_predicted[i]},
-                          {"slanted_edge", slanted_predicted[i]},
-                          {"slanted_edge_cut_cells", cut_cells(slanted_plane, side)},
-                          {"slanted_edge_measured_over_predicted", jittered_slanted.rows[i].variance / slanted_predicted[i]}});
+    prediction.push_back(
+        {{"n", counts[i]},
+         {"grid", side},
+         {"edge", axis_predicted[i]},
+         {"edge_cut_cells", cut_cells(axis_plane, side)},
+         {"edge_measured_over_predicted", jittered_axis.rows[i].variance / axis_predicted[i]},
+         {"slanted_edge", slanted_predicted[i]},
+         {"slanted_edge_cut_cells", cut_cells(slanted_plane, side)},
+         {"slanted_edge_measured_over_predicted", jittered_slanted.rows[i].variance / slanted_predicted[i]}});
   }
 
-  Table table{fmt::format("Fitted slopes of log variance against log N (95% interval: jackknife over runs), N = {} … {}, {} runs per N",
-                          counts.front(), counts.back(), runs),
-              {"sampler", "axis-aligned edge slope", "slanted edge slope", "smooth (gaussian) slope",
-               "axis-aligned edge variance at N = " + std::to_string(counts.back()),
-               "slanted edge variance at N = " + std::to_string(counts.back()),
-               "smooth variance at N = " + std::to_string(counts.back())},
-              {}};
+  Table table{
+      fmt::format(
+          "Fitted slopes of log variance against log N (95% interval: jackknife over runs), N = {} … {}, {} runs per N",
+          counts.front(), counts.back(), runs),
+      {"sampler", "axis-aligned edge slope", "slanted edge slope", "smooth (gaussian) slope",
+       "axis-aligned edge variance at N = " + std::to_string(counts.back()),
+       "slanted edge variance at N = " + std::to_string(counts.back()),
+       "smooth variance at N = " + std::to_string(counts.back())},
+      {}};
   for (std::size_t s = 0; s < samplers.size(); ++s) {
     const auto& e = edge.samplers[s];
     const auto& l = slanted.samplers[s];
@@ -225,8 +229,7 @@ Section stratification_section(SectionContext& context) {
       {}};
   for (const auto& row : prediction)
     predicted_table.rows.push_back(
-        {std::to_string(row["n"].get<std::uint64_t>()),
-         fmt::format("{0}×{0}", row["grid"].get<std::uint64_t>()),
+        {std::to_string(row["n"].get<std::uint64_t>()), fmt::format("{0}×{0}", row["grid"].get<std::uint64_t>()),
          std::to_string(row["edge_cut_cells"].get<std::uint64_t>()), format_number(row["edge"].get<double>()),
          format_number(row["edge_measured_over_predicted"].get<double>()),
          std::to_string(row["slanted_edge_cut_cells"].get<std::uint64_t>()),
@@ -247,9 +250,12 @@ Section stratification_section(SectionContext& context) {
   // Independent runs: s²_random/s²_jittered over σ²_random/σ²_jittered is F(R − 1, R − 1).
   const double variance_ratio = random_edge.rows.back().variance / entry_of(edge, "jittered").rows.back().variance;
   const boost::math::fisher_f f_distribution(runs - 1.0, runs - 1.0);
-  const double f_low = boost::math::quantile(f_distribution, 0.025), f_high = boost::math::quantile(f_distribution, 0.975);
-  section.numbers["edge_variance_ratio_random_over_jittered"] = {
-      {"estimate", variance_ratio}, {"low", variance_ratio / f_high}, {"high", variance_ratio / f_low}, {"confidence", 0.95}};
+  const double f_low = boost::math::quantile(f_distribution, 0.025),
+               f_high = boost::math::quantile(f_distribution, 0.975);
+  section.numbers["edge_variance_ratio_random_over_jittered"] = {{"estimate", variance_ratio},
+                                                                 {"low", variance_ratio / f_high},
+                                                                 {"high", variance_ratio / f_low},
+                                                                 {"confidence", 0.95}};
   const auto& jittered_edge = entry_of(edge, "jittered");
   const FormattedInterval edge_ratio = format_alike(variance_ratio, variance_ratio / f_high, variance_ratio / f_low);
   section.text.push_back(fmt::format(
@@ -281,8 +287,7 @@ Section stratification_section(SectionContext& context) {
       "standard error of about {}%); the wobble of the axis-aligned curve is exact too: its cut column covers "
       "frac(√N/π) of each cell.",
       format_number(slanted_degrees), change("sobol"), slope_text(entry_of(slanted, "sobol")), change("pmj02"),
-      slope_text(entry_of(slanted, "pmj02")),
-      slope_text(jittered_slanted), slope_text(entry_of(slanted, "random")),
+      slope_text(entry_of(slanted, "pmj02")), slope_text(jittered_slanted), slope_text(entry_of(slanted, "random")),
       [&] {
         double low = 1e300, high = 0;
         for (const auto& row : prediction) {
@@ -313,20 +318,24 @@ Section stratification_section(SectionContext& context) {
 
   const nlohmann::json figure = {
       {"columns", 2},
-      {"panels", {panel(edge, "An axis-aligned edge, 1[x < 1/π]", -1.5, "lecture", axis_predicted),
-                  panel(slanted, fmt::format("A slanted edge at {}°", format_number(slanted_degrees)), -1.5,
-                        "lecture", slanted_predicted),
-                  panel(smooth, "A smooth integrand, exp(−x² − y²)", -2.0, "jittered, smooth f: theory")}}};
+      {"panels",
+       {panel(edge, "An axis-aligned edge, 1[x < 1/π]", -1.5, "lecture", axis_predicted),
+        panel(slanted, fmt::format("A slanted edge at {}°", format_number(slanted_degrees)), -1.5, "lecture",
+              slanted_predicted),
+        panel(smooth, "A smooth integrand, exp(−x² − y²)", -2.0, "jittered, smooth f: theory")}}};
   section.figures.push_back(context.plot(
       "report_lines", figure, "convergence",
-      fmt::format("Variance of the estimate against N ({} randomizations per N) on an axis-aligned edge, a slanted "
-                  "edge and a smooth integrand; fitted slopes in the legend; dashed: jittered's exact variance; dotted, "
-                  "through jittered's first point: the lecture's N^-1.5 on the edges and "
-                  "the theoretical N^-2 of jittered sampling on a smooth integrand (the lecture states no rate there)",
-                  runs)));
+      fmt::format(
+          "Variance of the estimate against N ({} randomizations per N) on an axis-aligned edge, a slanted "
+          "edge and a smooth integrand; fitted slopes in the legend; dashed: jittered's exact variance; dotted, "
+          "through jittered's first point: the lecture's N^-1.5 on the edges and "
+          "the theoretical N^-2 of jittered sampling on a smooth integrand (the lecture states no rate there)",
+          runs)));
   section.tables.push_back(std::move(table));
   section.tables.push_back(std::move(predicted_table));
-  section.try_it = {"stratum converge --integrand step --samplers random,jittered,sobol:owen,halton:owen --n 16:4096:4 --plot step.png"};
+  section.try_it = {
+      "stratum converge --integrand step --samplers random,jittered,sobol:owen,halton:owen --n 16:4096:4 --plot "
+      "step.png"};
   return section;
 }
 

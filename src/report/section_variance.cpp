@@ -64,9 +64,10 @@ Section variance_section(SectionContext& context) {
     for (std::size_t c = 0; c < images.size(); ++c)
       penumbra_mse[c].push_back(masked_mean_squared_error(images[c], comparison.reference, mask));
   const std::vector<RowStatistics> local = row_statistics(comparison, penumbra_mse);
-  Table region{fmt::format("Inside the penumbra outlined in the figure ({} seeds; per-sample variance of the first)", repeats),
-               {"configuration", "pixels", "MSE (mean ± s.e.)", "per-sample variance", "MSE ratio (1 ray / this)"},
-               {}};
+  Table region{
+      fmt::format("Inside the penumbra outlined in the figure ({} seeds; per-sample variance of the first)", repeats),
+      {"configuration", "pixels", "MSE (mean ± s.e.)", "per-sample variance", "MSE ratio (1 ray / this)"},
+      {}};
   for (std::size_t c = 0; c < configs.size(); ++c) {
     const RegionError first = region_error(comparison.images[0][c], comparison.reference, box);
     region.rows.push_back({comparison.labels[c], std::to_string(box.width * box.height),
@@ -100,10 +101,9 @@ Section variance_section(SectionContext& context) {
       format_number(sixteen_row.mse.standard_error, 2), format_number(rows[one]["sample_variance"]),
       format_number(rows[sixteen]["sample_variance"]), format_number(pen[one]["sample_variance"]),
       format_number(pen[sixteen]["sample_variance"]), format_factor(local[1].mse_ratio)));
-  section.text.push_back(fmt::format("16 rays {} (median {} against {}). Intervals: {}.",
-                                     time_and_efficiency_text(sixteen_row, "1 ray"),
-                                     format_seconds(sixteen_row.median_seconds),
-                                     format_seconds(statistics[0].median_seconds), method));
+  section.text.push_back(
+      fmt::format("16 rays {} (median {} against {}). Intervals: {}.", time_and_efficiency_text(sixteen_row, "1 ray"),
+                  format_seconds(sixteen_row.median_seconds), format_seconds(statistics[0].median_seconds), method));
   section.try_it = {"stratum compare --builtin shadow-rays --width 64 --height 64"};
   return section;
 }

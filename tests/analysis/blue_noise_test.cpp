@@ -66,10 +66,11 @@ TEST(BlueNoiseOptimizer, OnlySwapsRanksAndLowersTheEnergy) {
 }
 
 TEST(BlueNoiseOptimizer, RefusesBadOptions) {
-  for (auto change : {+[](sa::BlueNoiseOptions& o) { o.size = 8; }, +[](sa::BlueNoiseOptions& o) { o.size = 512; }, +[](sa::BlueNoiseOptions& o) { o.size = 24; },
-                      +[](sa::BlueNoiseOptions& o) { o.dims = 3; }, +[](sa::BlueNoiseOptions& o) { o.dims = 0; },
-                      +[](sa::BlueNoiseOptions& o) { o.max_spp = 12; }, +[](sa::BlueNoiseOptions& o) { o.integrands = 0; },
-                      +[](sa::BlueNoiseOptions& o) { o.sweeps = 200000; }}) {
+  for (auto change :
+       {+[](sa::BlueNoiseOptions& o) { o.size = 8; }, +[](sa::BlueNoiseOptions& o) { o.size = 512; },
+        +[](sa::BlueNoiseOptions& o) { o.size = 24; }, +[](sa::BlueNoiseOptions& o) { o.dims = 3; },
+        +[](sa::BlueNoiseOptions& o) { o.dims = 0; }, +[](sa::BlueNoiseOptions& o) { o.max_spp = 12; },
+        +[](sa::BlueNoiseOptions& o) { o.integrands = 0; }, +[](sa::BlueNoiseOptions& o) { o.sweeps = 200000; }}) {
     sa::BlueNoiseOptions o = small();
     change(o);
     EXPECT_THROW(sa::optimize_blue_noise(o), stratum::invalid_argument);
@@ -119,7 +120,8 @@ TEST(BlueNoiseOptimizer, TheDefaultTileMakesTheErrorBlue) {
   for (std::uint32_t spp : {1u, 4u, 16u}) {
     EXPECT_GT(heaviside_image_power(padding, spp, seeds).mean, 0.9) << "per-pixel Owen-Sobol' should be white, " << spp;
     for (std::uint32_t pair : {0u, padding - 1})
-      EXPECT_LT(heaviside_image_power(pair, spp, seeds).mean, spp == 1 ? 0.45 : 0.72) << "pair " << pair << ", spp " << spp;
+      EXPECT_LT(heaviside_image_power(pair, spp, seeds).mean, spp == 1 ? 0.45 : 0.72)
+          << "pair " << pair << ", spp " << spp;
   }
 }
 

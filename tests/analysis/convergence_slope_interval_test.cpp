@@ -29,8 +29,8 @@ double sample_variance(const std::vector<double>& values) {
 TEST(SlopeInterval, EqualsABruteForceJackknife) {
   const std::vector<double> x{16, 64, 256};
   const unsigned runs = 5;
-  const std::vector<double> estimates{0.51, 0.47, 0.55, 0.40, 0.52,      // N = 16
-                                      0.49, 0.505, 0.52, 0.47, 0.50,     // N = 64
+  const std::vector<double> estimates{0.51,  0.47,  0.55, 0.40,  0.52,    // N = 16
+                                      0.49,  0.505, 0.52, 0.47,  0.50,    // N = 64
                                       0.501, 0.497, 0.51, 0.492, 0.503};  // N = 256
   auto slope_without = [&](int left_out) {
     std::vector<double> variances;

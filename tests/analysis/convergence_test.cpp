@@ -223,7 +223,8 @@ TEST(Convergence, DefaultCountsWorkForEveryIntegrand) {
       const auto k = static_cast<std::uint64_t>(std::llround(std::sqrt(static_cast<double>(row.n))));
       EXPECT_EQ(k * k, row.n) << info.name;  // d = 2 by default: squares only
     }
-    for (const auto& skip : jittered.skipped) EXPECT_NE(skip.reason.find("invalid n = " + std::to_string(skip.n)), std::string::npos);
+    for (const auto& skip : jittered.skipped)
+      EXPECT_NE(skip.reason.find("invalid n = " + std::to_string(skip.n)), std::string::npos);
     EXPECT_FALSE(std::isnan(jittered.slope.slope)) << info.name;
   }
   // Without skip_refused_counts a refused count still fails, and a sampler that
@@ -244,7 +245,8 @@ TEST(Convergence, DefaultCountsWorkForEveryIntegrand) {
   request.skip_refused_counts = false;
   const auto plain = run_convergence(request);
   ASSERT_EQ(skipping.samplers[0].rows.size(), 2u);
-  for (std::size_t k = 0; k < 2; ++k) EXPECT_EQ(skipping.samplers[0].rows[k].variance, plain.samplers[0].rows[k].variance);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_EQ(skipping.samplers[0].rows[k].variance, plain.samplers[0].rows[k].variance);
 }
 
 // The RQMC interval estimate ± t_{R−1} · SE covers the exact value at its
@@ -269,8 +271,8 @@ TEST(Convergence, IntegrateIntervalCoversAtItsLevel) {
   request.confidence = 0.5;
   const auto narrow = integrate(request);
   const boost::math::students_t t7(7);
-  EXPECT_NEAR(narrow.half_width / wide.half_width,
-              boost::math::quantile(t7, 0.75) / boost::math::quantile(t7, 0.975), 1e-12);
+  EXPECT_NEAR(narrow.half_width / wide.half_width, boost::math::quantile(t7, 0.75) / boost::math::quantile(t7, 0.975),
+              1e-12);
   EXPECT_EQ(narrow.confidence, 0.5);
   EXPECT_NEAR(wide.half_width, 2.3646242515927853 * wide.standard_error, 1e-12 * wide.standard_error);  // t_{7, 0.975}
   EXPECT_NEAR(wide.efficiency, 1 / (wide.standard_error * wide.standard_error * 8 * wide.seconds_per_run),

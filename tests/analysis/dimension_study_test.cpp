@@ -73,7 +73,8 @@ TEST(DimensionStudy, GaussIsExactBelowDegree2mInEveryDimension) {
       const auto rule = sa::gauss_legendre_rule(m);
       const ProductPolynomial exact_case(d, 2 * m - 1, 17 + d);
       const double q = sa::tensor_product_integral(std::cref(exact_case), d, rule, 2);
-      EXPECT_NEAR(q, exact_case.exact(), 1e-12 * std::max(1.0, std::abs(exact_case.exact()))) << "d=" << d << " m=" << m;
+      EXPECT_NEAR(q, exact_case.exact(), 1e-12 * std::max(1.0, std::abs(exact_case.exact())))
+          << "d=" << d << " m=" << m;
       // x_1^(2m): Gauss error is (m!)^4 / ((2m+1) ((2m)!)^3) · (2m)! ≠ 0 (on [0,1]).
       const auto monomial = [m](const double* x, unsigned) { return std::pow(x[0], 2.0 * m); };
       const double q2 = sa::tensor_product_integral(monomial, d, rule, 1);
@@ -231,7 +232,7 @@ TEST(DimensionStudy, AcceptsSmoothRegistryIntegrands) {
   for (const auto& s : study.series) {
     EXPECT_LT(s.product_error.back(), 1e-12 * s.exact) << "d = " << s.d;
     EXPECT_GT(s.product_error.front(), 1e-6 * s.exact) << "d = " << s.d;  // 4 points per axis are not enough
-    EXPECT_LT(s.variance, 0);                                                 // unknown
+    EXPECT_LT(s.variance, 0);                                             // unknown
     for (double e : s.mc_rmse) EXPECT_TRUE(std::isfinite(e) && e > 0);
   }
 }

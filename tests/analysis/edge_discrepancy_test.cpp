@@ -68,8 +68,8 @@ TEST(EdgeDiscrepancyOrientation, ExactWhereFloatingPointFails) {
     for (int j = 0; j < 64; ++j) {
       const double px = 0.5 + i * ulp, py = 0.5 + j * ulp, qx = 12, qy = 12, rx = 24, ry = 24;
       auto scaled = [](double v) { return static_cast<__int128>(std::ldexp(v, 53)); };
-      const __int128 det = (scaled(qx) - scaled(px)) * (scaled(ry) - scaled(py)) -
-                           (scaled(qy) - scaled(py)) * (scaled(rx) - scaled(px));
+      const __int128 det =
+          (scaled(qx) - scaled(px)) * (scaled(ry) - scaled(py)) - (scaled(qy) - scaled(py)) * (scaled(rx) - scaled(px));
       const int expected = det > 0 ? 1 : det < 0 ? -1 : 0;
       ASSERT_EQ(orientation(px, py, qx, qy, rx, ry), expected) << i << " " << j;
       const double naive = (qx - px) * (ry - py) - (qy - py) * (rx - px);
@@ -160,8 +160,9 @@ double exact_mean_line_discrepancy(const PointView& points, int directions, doub
       const double lo = breaks[b], hi = breaks[b + 1];
       if (hi <= lo) continue;
       const double mid = 0.5 * (lo + hi);
-      const double fraction =
-          static_cast<double>(std::count_if(projections.begin(), projections.end(), [&](double t) { return t < mid; })) / n;
+      const double fraction = static_cast<double>(std::count_if(projections.begin(), projections.end(),
+                                                                [&](double t) { return t < mid; })) /
+                              n;
       auto difference = [&](double p) { return fraction - half_plane_area(nx, ny, p); };
       std::vector<double> cuts{lo, hi};
       if ((difference(lo) > 0) != (difference(hi) > 0)) {  // the area is increasing: one root
@@ -247,7 +248,9 @@ TEST(EdgeDiscrepancyMeasures, RegistryFacesAndBadInput) {
   EXPECT_NE(error_of("edge-random", xs, 2, {{"lines", "-3"}}).find("invalid lines = -3"), std::string::npos);
   EXPECT_NE(error_of("edge-random", xs, 2, {{"lines", "1e3"}}).find("invalid lines = 1e3"), std::string::npos);
   EXPECT_NE(error_of("edge-random", xs, 2, {{"seed", "x"}}).find("invalid seed = x"), std::string::npos);
-  EXPECT_NE(error_of("edge", xs, 2, {{"lines", "10"}}).find("invalid measure-param = lines=10: edge takes no parameters"), std::string::npos);
+  EXPECT_NE(
+      error_of("edge", xs, 2, {{"lines", "10"}}).find("invalid measure-param = lines=10: edge takes no parameters"),
+      std::string::npos);
   EXPECT_NE(error_of("edge", {0.5, 0.5}, 2).find("invalid n = 1"), std::string::npos);
   EXPECT_THROW(random_edge_discrepancy(view(xs), 0, 0), invalid_argument);
   EXPECT_THROW(edge_discrepancy({xs.data(), 25, 4}), invalid_argument);

@@ -154,13 +154,16 @@ TEST(Geometry, MeasuresAndBadInput) {
   const MeasureResult rho = compute_measure("poisson-radius", view(grid), {});
   EXPECT_NEAR(rho.value, std::sqrt(std::sqrt(3.0) / 2), 1e-14);
   EXPECT_NEAR(rho.extras.at("packing_distance"), std::sqrt(2 / (std::sqrt(3.0) * 64)), 1e-15);
-  EXPECT_NE(error_of([&] { compute_measure("min-distance", view(grid), {{{"toroidal", "maybe"}}, 1}); })
-                .find("invalid toroidal = maybe"),
+  EXPECT_NE(error_of([&] {
+              compute_measure("min-distance", view(grid), {{{"toroidal", "maybe"}}, 1});
+            }).find("invalid toroidal = maybe"),
             std::string::npos);
   const PointSet nine = points_of("random", 20, 9);
-  EXPECT_NE(error_of([&] { compute_measure("poisson-radius", view(nine), {}); }).find("invalid d = 9"), std::string::npos);
+  EXPECT_NE(error_of([&] { compute_measure("poisson-radius", view(nine), {}); }).find("invalid d = 9"),
+            std::string::npos);
   const PointSet random = points_of("random", 100, 2);
-  EXPECT_NE(error_of([&] { pair_correlation(view(random), {0.1}, 0, 1); }).find("invalid sigma = 0"), std::string::npos);
+  EXPECT_NE(error_of([&] { pair_correlation(view(random), {0.1}, 0, 1); }).find("invalid sigma = 0"),
+            std::string::npos);
   EXPECT_NE(error_of([&] { pair_correlation(view(random), {0.45}, 0.02, 1); }).find("invalid radius = 0.45"),
             std::string::npos);
   EXPECT_NE(error_of([&] { pair_correlation(view(random), {-0.1}, 0.02, 1); }).find("invalid radius = -0.1"),

@@ -76,7 +76,8 @@ TEST(ImageSpectrum, HighPassNoiseMatchesItsTransferFunction) {
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const auto at = [&](int i, int j) { return white[std::size_t((j + n) % n) * n + std::size_t((i + n) % n)]; };
-      blue[std::size_t(y) * n + std::size_t(x)] = at(x, y) - (at(x - 1, y) + at(x + 1, y) + at(x, y - 1) + at(x, y + 1)) / 4;
+      blue[std::size_t(y) * n + std::size_t(x)] =
+          at(x, y) - (at(x - 1, y) + at(x + 1, y) + at(x, y - 1) + at(x, y + 1)) / 4;
     }
   double all = 0, low = 0;
   int all_count = 0, low_count = 0;

@@ -47,9 +47,9 @@ TEST(ImportanceStudy, LambertFormulaMatchesViewFactorForCenteredSquares) {
 TEST(ImportanceStudy, LambertFormulaMatchesBruteForceForTiltedAndOffsetLights) {
   const double c = std::cos(0.4), s = std::sin(0.4);
   const sa::RectangleLight lights[] = {
-      {{0.3, -0.2, 0.5}, {0.7, 0, 0}, {0, 1.3, 0}, 1.0},              // offset, parallel
-      {{-0.5, 0.2, 0.4}, {1.0, 0, 0}, {0, 0.6 * c, 0.6 * s}, 1.5},    // tilted about x
-      {{1.0, 1.0, 0.2}, {0.5 * c, 0, 0.5 * s}, {0, 2.0, 0}, 0.7},     // far off-axis, tilted about y
+      {{0.3, -0.2, 0.5}, {0.7, 0, 0}, {0, 1.3, 0}, 1.0},            // offset, parallel
+      {{-0.5, 0.2, 0.4}, {1.0, 0, 0}, {0, 0.6 * c, 0.6 * s}, 1.5},  // tilted about x
+      {{1.0, 1.0, 0.2}, {0.5 * c, 0, 0.5 * s}, {0, 2.0, 0}, 0.7},   // far off-axis, tilted about y
   };
   for (const auto& light : lights) {
     const double brute = light.radiance * sa::rectangle_area_integral(light, 1, 1, 1, 64, 10);
@@ -66,11 +66,17 @@ TEST(ImportanceStudy, RejectsBadLightsAndRequests) {
     }
     return "";
   };
-  EXPECT_NE(message([] { sa::rectangle_irradiance({{0, 0, -1}, {1, 0, 0}, {0, 1, 0}, 1}); }).find("above the receiver"),
+  EXPECT_NE(message([] {
+              sa::rectangle_irradiance({{0, 0, -1}, {1, 0, 0}, {0, 1, 0}, 1});
+            }).find("above the receiver"),
             std::string::npos);
-  EXPECT_NE(message([] { sa::rectangle_irradiance({{0, 0, 1}, {1, 0, 0}, {1, 1, 0}, 1}); }).find("perpendicular"),
+  EXPECT_NE(message([] {
+              sa::rectangle_irradiance({{0, 0, 1}, {1, 0, 0}, {1, 1, 0}, 1});
+            }).find("perpendicular"),
             std::string::npos);
-  EXPECT_NE(message([] { sa::rectangle_irradiance({{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, 0}); }).find("invalid radiance"),
+  EXPECT_NE(message([] {
+              sa::rectangle_irradiance({{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, 0});
+            }).find("invalid radiance"),
             std::string::npos);
   sa::ImportanceStudyRequest r;
   r.runs = 1;
@@ -140,7 +146,8 @@ TEST(ImportanceStudy, MeasurementsAgreeWithTheory) {
   const double alpha = 1 - std::pow(1 - 0.01, 1.0 / static_cast<double>(tests));
   const double t = boost::math::quantile(boost::math::students_t(request.runs - 1), 1 - alpha / 2);
   const auto check = [&](const sa::ImportanceComparison& c) {
-    SCOPED_TRACE(c.study + " " + c.scene + " size " + std::to_string(c.size) + " distance " + std::to_string(c.distance));
+    SCOPED_TRACE(c.study + " " + c.scene + " size " + std::to_string(c.size) + " distance " +
+                 std::to_string(c.distance));
     for (const sa::MethodResult* m : {&c.a, &c.b}) {
       SCOPED_TRACE(m->method);
       if (m->predicted_variance == 0) continue;

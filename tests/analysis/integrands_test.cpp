@@ -155,7 +155,8 @@ TEST(Integrands, EveryEntryAgainstRandomizedQmc) {
   std::vector<Case> cases;
   for (const auto& info : integrands())
     for (unsigned d : {info.min_dim, info.default_dim, std::min(info.max_dim, 5u)})
-      if (d >= info.min_dim && d <= info.max_dim && (cases.empty() || cases.back().name != info.name || cases.back().d != d))
+      if (d >= info.min_dim && d <= info.max_dim &&
+          (cases.empty() || cases.back().name != info.name || cases.back().d != d))
         cases.push_back({info.name, d});
   const double alpha = 1 - std::pow(1 - 0.01, 1.0 / cases.size());
   for (const auto& c : cases) {
@@ -188,9 +189,9 @@ TEST(Integrands, RegistryIsConsistent) {
     EXPECT_LE(info.default_dim, info.max_dim) << info.name;
     EXPECT_EQ(make_integrand(info.name, 0)->dimension(), info.default_dim) << info.name;
   }
-  for (const char* expected : {"disk", "triangle", "step", "gaussian", "bilinear", "edge-random", "genz-oscillatory",
-                               "genz-product-peak", "genz-corner-peak", "genz-gaussian", "genz-continuous",
-                               "genz-discontinuous"})
+  for (const char* expected :
+       {"disk", "triangle", "step", "gaussian", "bilinear", "edge-random", "genz-oscillatory", "genz-product-peak",
+        "genz-corner-peak", "genz-gaussian", "genz-continuous", "genz-discontinuous"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
 }
 
@@ -199,25 +200,40 @@ TEST(Integrands, BadInput) {
             std::string::npos);
   EXPECT_NE(error_of([] { make_integrand("disk", 3); }).find("invalid d = 3"), std::string::npos);
   EXPECT_NE(error_of([] { make_integrand("genz-corner-peak", 51); }).find("invalid d = 51"), std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("disk", 2, {{"a", {1}}}); }).find("invalid integrand-param = a=1: disk takes no"),
+  EXPECT_NE(error_of([] {
+              make_integrand("disk", 2, {{"a", {1}}});
+            }).find("invalid integrand-param = a=1: disk takes no"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 3, {{"a", {1, 2}}}); }).find("invalid a = 2 numbers: needs 1 number or d = 3"),
+  EXPECT_NE(error_of([] {
+              make_integrand("genz-gaussian", 3, {{"a", {1, 2}}});
+            }).find("invalid a = 2 numbers: needs 1 number or d = 3"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 2, {{"a", {-1}}}); }).find("invalid a[0] = -1: must be a finite real in (0, inf)"),
+  EXPECT_NE(error_of([] {
+              make_integrand("genz-gaussian", 2, {{"a", {-1}}});
+            }).find("invalid a[0] = -1: must be a finite real in (0, inf)"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-gaussian", 2, {{"u", {1.5}}}); }).find("invalid u[0] = 1.5: must be a finite real in [0, 1]"),
+  EXPECT_NE(error_of([] {
+              make_integrand("genz-gaussian", 2, {{"u", {1.5}}});
+            }).find("invalid u[0] = 1.5: must be a finite real in [0, 1]"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("genz-oscillatory", 2, {{"a", {NAN}}}); }).find("invalid a[0] = nan"),
+  EXPECT_NE(error_of([] {
+              make_integrand("genz-oscillatory", 2, {{"a", {NAN}}});
+            }).find("invalid a[0] = nan"),
             std::string::npos);
-  EXPECT_NE(error_of([] { make_integrand("edge-random", 2, {{"seed", {1.5}}}); }).find("invalid seed = 1.5"),
+  EXPECT_NE(error_of([] {
+              make_integrand("edge-random", 2, {{"seed", {1.5}}});
+            }).find("invalid seed = 1.5"),
             std::string::npos);
   const auto parse = [](const char* text) { return parse_integrand_params("genz-oscillatory", {{"a", text}}).at("a"); };
   EXPECT_NE(error_of([&] { parse("1,x"); }).find("invalid a[1] = x"), std::string::npos);
   EXPECT_NE(error_of([&] { parse(""); }).find("invalid a = ''"), std::string::npos);
-  EXPECT_NE(error_of([&] { parse("1e999"); }).find("invalid a[0] = 1e999: must be a finite real (a takes 1 to 1024 reals)"), std::string::npos);
+  EXPECT_NE(
+      error_of([&] { parse("1e999"); }).find("invalid a[0] = 1e999: must be a finite real (a takes 1 to 1024 reals)"),
+      std::string::npos);
   EXPECT_EQ(parse("1,2.5,-3"), (std::vector<double>{1, 2.5, -3}));
-  EXPECT_NE(error_of([] { parse_integrand_params("genz-oscillatory", {{"b", "1"}}); })
-                .find("invalid integrand-param = b=1: genz-oscillatory takes a, u"),
+  EXPECT_NE(error_of([] {
+              parse_integrand_params("genz-oscillatory", {{"b", "1"}});
+            }).find("invalid integrand-param = b=1: genz-oscillatory takes a, u"),
             std::string::npos);
   const auto f = make_integrand("bilinear", 2);
   const std::vector<double> bad{0.5, 0.5, 0.2, NAN};

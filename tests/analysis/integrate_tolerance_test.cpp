@@ -71,7 +71,8 @@ TEST(IntegrateToTolerance, MaxNEndsTheDoublingUnmet) {
 
 TEST(IntegrateToTolerance, RefusalsComeFirst) {
   ToleranceRequest request = gaussian_request("random", 0, 4, 0);
-  EXPECT_EQ(error_of([&] { integrate_to_tolerance(request); }), "invalid abs-tol = 0: give --abs-tol or --rel-tol greater than 0");
+  EXPECT_EQ(error_of([&] { integrate_to_tolerance(request); }),
+            "invalid abs-tol = 0: give --abs-tol or --rel-tol greater than 0");
   request.abs_tol = -1;
   EXPECT_EQ(error_of([&] { integrate_to_tolerance(request); }), "invalid abs-tol = -1: must be a finite real >= 0");
   request.abs_tol = std::nan("");

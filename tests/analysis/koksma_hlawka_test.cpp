@@ -64,8 +64,8 @@ TEST(KoksmaHlawka, ProductFormulaByHand) {
 }
 
 TEST(KoksmaHlawka, InequalityHoldsWithTheExactStarDiscrepancy) {
-  for (const auto& [sampler, randomize] : {std::pair<std::string, std::string>{"random", ""}, {"jittered", ""},
-                                            {"hammersley", "none"}, {"sobol", "owen"}})
+  for (const auto& [sampler, randomize] :
+       {std::pair<std::string, std::string>{"random", ""}, {"jittered", ""}, {"hammersley", "none"}, {"sobol", "owen"}})
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       SamplerRequest request;
       request.n = 64;

@@ -119,7 +119,9 @@ double naive(L2Kind kind, const Points& x, std::size_t d) {
     double h = 1;
     for (std::size_t k = 0; k < d; ++k) {
       const double v = x[i * d + k], c = std::abs(v - 0.5);
-      h *= kind == L2Kind::star ? 1 - v * v : kind == L2Kind::centered ? 1 + c / 2 - c * c / 2 : 5.0 / 3 - c / 4 - c * c / 4;
+      h *= kind == L2Kind::star       ? 1 - v * v
+           : kind == L2Kind::centered ? 1 + c / 2 - c * c / 2
+                                      : 5.0 / 3 - c / 4 - c * c / 4;
     }
     single += h;
     for (std::size_t j = 0; j < n; ++j) {
@@ -128,10 +130,18 @@ double naive(L2Kind kind, const Points& x, std::size_t d) {
         const double a = x[i * d + k], b = x[j * d + k], t = std::abs(a - b);
         const double ca = std::abs(a - 0.5), cb = std::abs(b - 0.5);
         switch (kind) {
-          case L2Kind::star: g *= 1 - std::max(a, b); break;
-          case L2Kind::centered: g *= 1 + ca / 2 + cb / 2 - t / 2; break;
-          case L2Kind::wrap_around: g *= 1.5 - t + t * t; break;
-          case L2Kind::mixture: g *= 15.0 / 8 - ca / 4 - cb / 4 - 3 * t / 4 + t * t / 2; break;
+          case L2Kind::star:
+            g *= 1 - std::max(a, b);
+            break;
+          case L2Kind::centered:
+            g *= 1 + ca / 2 + cb / 2 - t / 2;
+            break;
+          case L2Kind::wrap_around:
+            g *= 1.5 - t + t * t;
+            break;
+          case L2Kind::mixture:
+            g *= 15.0 / 8 - ca / 4 - cb / 4 - 3 * t / 4 + t * t / 2;
+            break;
         }
       }
       pairs += g;
@@ -139,10 +149,14 @@ double naive(L2Kind kind, const Points& x, std::size_t d) {
   }
   const long double dd = static_cast<long double>(d), nn = static_cast<long double>(n);
   switch (kind) {
-    case L2Kind::star: return double(std::pow(3.0L, -dd) - std::pow(2.0L, 1 - dd) / nn * single + pairs / (nn * nn));
-    case L2Kind::centered: return double(std::pow(13.0L / 12, dd) - 2 / nn * single + pairs / (nn * nn));
-    case L2Kind::wrap_around: return double(-std::pow(4.0L / 3, dd) + pairs / (nn * nn));
-    case L2Kind::mixture: return double(std::pow(19.0L / 12, dd) - 2 / nn * single + pairs / (nn * nn));
+    case L2Kind::star:
+      return double(std::pow(3.0L, -dd) - std::pow(2.0L, 1 - dd) / nn * single + pairs / (nn * nn));
+    case L2Kind::centered:
+      return double(std::pow(13.0L / 12, dd) - 2 / nn * single + pairs / (nn * nn));
+    case L2Kind::wrap_around:
+      return double(-std::pow(4.0L / 3, dd) + pairs / (nn * nn));
+    case L2Kind::mixture:
+      return double(std::pow(19.0L / 12, dd) - 2 / nn * single + pairs / (nn * nn));
   }
   return 0;
 }
@@ -189,8 +203,8 @@ TEST(L2Discrepancy, HammersleyClosedForm) {
       x[2 * i + 1] = static_cast<double>(reversed) / n;
     }
     const double mm = m, nn = static_cast<double>(n);
-    const double closed = (mm * mm / 64 + 29 * mm / 192 + 3.0 / 8 - mm / (16 * nn) + 1 / (4 * nn) - 1 / (72 * nn * nn)) /
-                          (nn * nn);
+    const double closed =
+        (mm * mm / 64 + 29 * mm / 192 + 3.0 / 8 - mm / (16 * nn) + 1 / (4 * nn) - 1 / (72 * nn * nn)) / (nn * nn);
     // D² is a difference of O(1/9) terms: long double (eps 1.1e-19) bounds its absolute accuracy near 1e-19,
     // which is 6e-11 relative at m = 16 (D² = 1.6e-9); below m = 15 the 1e-12 relative bound is the tighter one.
     EXPECT_NEAR(squared(L2Kind::star, x, 2, L2Algorithm::fast), closed, std::max(1e-12 * closed, 1e-19)) << m;

@@ -37,8 +37,11 @@ std::size_t count_closed(const PointView& p, double x, double y) {
 }
 
 TEST(StarDiscrepancyBox, ValueEqualsTheExactSweepAndTheBoxReproducesIt) {
-  for (const auto& [sampler, randomize] : {std::pair<std::string, std::string>{"random", ""}, {"jittered", ""},
-                                            {"hammersley", "none"}, {"halton", "none"}, {"n-rooks", ""}})
+  for (const auto& [sampler, randomize] : {std::pair<std::string, std::string>{"random", ""},
+                                           {"jittered", ""},
+                                           {"hammersley", "none"},
+                                           {"halton", "none"},
+                                           {"n-rooks", ""}})
     for (std::size_t n : {1u, 2u, 7u, 16u, 64u, 200u}) {
       if (sampler == "jittered" && std::sqrt(n) != std::floor(std::sqrt(n))) continue;
       const PointSet points = points_of(sampler, n, 3 + n, randomize);
@@ -48,8 +51,8 @@ TEST(StarDiscrepancyBox, ValueEqualsTheExactSweepAndTheBoxReproducesIt) {
       // The reported box, counted directly, gives the reported value.
       const std::size_t count = box.closed ? count_closed(view, box.x, box.y) : count_open(view, box.x, box.y);
       EXPECT_EQ(count, box.count);
-      const double local = box.closed ? static_cast<double>(count) / n - box.x * box.y
-                                      : box.x * box.y - static_cast<double>(count) / n;
+      const double local =
+          box.closed ? static_cast<double>(count) / n - box.x * box.y : box.x * box.y - static_cast<double>(count) / n;
       EXPECT_NEAR(local, box.value, 1e-15);
     }
 }
@@ -96,9 +99,9 @@ TEST(LocalDiscrepancyGrid, PointsOnGridLinesCountOnTheCorrectSide) {
   const double xy[4] = {0.5, 0.25, 0.25, 0.5};
   const auto grid = local_discrepancy_grid({xy, 2, 2}, 4);
   const auto at = [&](int i, int j) { return grid.values[j * 5 + i]; };
-  EXPECT_DOUBLE_EQ(at(2, 2), 0.0 - 0.25);          // neither point in [0,.5)²
-  EXPECT_DOUBLE_EQ(at(3, 2), 0.5 - 0.375);         // (0.5, 0.25) in [0,.75)×[0,.5)
-  EXPECT_DOUBLE_EQ(at(3, 3), 1.0 - 0.5625);        // both
+  EXPECT_DOUBLE_EQ(at(2, 2), 0.0 - 0.25);    // neither point in [0,.5)²
+  EXPECT_DOUBLE_EQ(at(3, 2), 0.5 - 0.375);   // (0.5, 0.25) in [0,.75)×[0,.5)
+  EXPECT_DOUBLE_EQ(at(3, 3), 1.0 - 0.5625);  // both
 }
 
 TEST(LocalDiscrepancy, RejectsBadInput) {

@@ -92,8 +92,8 @@ TEST(MisStudy, MeasuredAgreesWithPredictedAndExact) {
 }
 
 TEST(MisStudy, VeachsBoundHoldsAndThePowerHeuristicWinsWhereOneStrategyIsNearlyExact) {
-  const MisStudy study = run_mis_study({.exponents = {0, 1, 10, 100, 1000}, .angles = {1, 2, 10, 30, 60, 90},
-                                        .runs = 2, .samples = 4});
+  const MisStudy study =
+      run_mis_study({.exponents = {0, 1, 10, 100, 1000}, .angles = {1, 2, 10, 30, 60, 90}, .runs = 2, .samples = 4});
   for (const MisCase& c : study.cases) {
     EXPECT_LE(c.methods[2].predicted_variance, c.balance_bound * (1 + 1e-9)) << c.exponent << " " << c.angle;
     EXPECT_EQ(c.methods[2].method, "balance");
@@ -129,13 +129,16 @@ TEST(MisStudy, ResultsDoNotDependOnThreads) {
 
 TEST(MisStudy, Refusals) {
   using stratum::testing::error_of;
-  EXPECT_EQ(error_of([] { run_mis_study({.angles = {0}}); }), "invalid angle = 0: light half-angles must be in (0, 90] degrees");
-  EXPECT_EQ(error_of([] { run_mis_study({.exponents = {-1}}); }), "invalid exponent = -1: Phong exponents must be in [0, 100000]");
+  EXPECT_EQ(error_of([] { run_mis_study({.angles = {0}}); }),
+            "invalid angle = 0: light half-angles must be in (0, 90] degrees");
+  EXPECT_EQ(error_of([] { run_mis_study({.exponents = {-1}}); }),
+            "invalid exponent = -1: Phong exponents must be in [0, 100000]");
   EXPECT_EQ(error_of([] { run_mis_study({.samples = 7}); }),
             "invalid samples = 7: must be even, in [4, 2^32] (the MIS methods take half from each strategy)");
   EXPECT_EQ(error_of([] { run_mis_study({.runs = 1}); }), "invalid runs = 1: must be in [2, 100000]");
   EXPECT_EQ(error_of([] { run_mis_study({.beta = 0}); }), "invalid beta = 0: must be in (0, 16]");
-  EXPECT_EQ(error_of([] { mis_predicted_variance("mixture", 1, 10); }), "invalid method = mixture: must be one of light, bsdf, balance, power");
+  EXPECT_EQ(error_of([] { mis_predicted_variance("mixture", 1, 10); }),
+            "invalid method = mixture: must be one of light, bsdf, balance, power");
 }
 
 }  // namespace

@@ -253,7 +253,8 @@ TEST(MitchellStudy, RejectsDuplicateUnknownAndUnrandomizableExtras) {
   EXPECT_NE(message({{"again", "jittered", {}, ""}}).find("invalid extra_patterns = jittered"), std::string::npos);
   EXPECT_NE(message({{"a", "sobol", {}, ""}, {"b", "sobol", {}, ""}}).find("invalid extra_patterns = sobol"),
             std::string::npos);
-  EXPECT_NE(message({{"r", "random", {}, "no-such"}}).find("invalid extra_patterns = random:no-such"), std::string::npos);
+  EXPECT_NE(message({{"r", "random", {}, "no-such"}}).find("invalid extra_patterns = random:no-such"),
+            std::string::npos);
   EXPECT_FALSE(message({{"?", "no-such-sampler", {}, ""}}).empty());
 }
 

@@ -54,7 +54,8 @@ TEST(Spectrum, FastRecurrenceMatchesBruteForce) {
     int k;
     std::size_t realizations;
   };
-  for (const Case c : {Case{50, 2, 12, 1}, Case{37, 2, 9, 3}, Case{20, 2, 70, 1}, Case{64, 1, 300, 2}, Case{5, 1, 3, 1}}) {
+  for (const Case c :
+       {Case{50, 2, 12, 1}, Case{37, 2, 9, 3}, Case{20, 2, 70, 1}, Case{64, 1, 300, 2}, Case{5, 1, 3, 1}}) {
     std::vector<PointSet> sets;
     std::vector<PointView> views;
     for (std::size_t r = 0; r < c.realizations; ++r) sets.push_back(random_points(c.n, c.d, 100 + r));

@@ -283,7 +283,8 @@ TEST(StarDiscrepancyDem, TwoDimensionsAgreeWithTheSweep) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const std::size_t n = 1 + seed * 13;
     for (const auto& x : {random_points(n, 2, seed), grid_points(n, 2, seed)}) {
-      EXPECT_EQ(sa::star_discrepancy_dem(PointView{x.data(), n, 2}), sa::star_discrepancy_2d(PointView{x.data(), n, 2}));
+      EXPECT_EQ(sa::star_discrepancy_dem(PointView{x.data(), n, 2}),
+                sa::star_discrepancy_2d(PointView{x.data(), n, 2}));
     }
   }
 }

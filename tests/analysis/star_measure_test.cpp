@@ -174,7 +174,9 @@ TEST(StarMeasure, BadInputNamesTheArgument) {
   EXPECT_NE(error_of(x, 30, 8, {{"delta", "0"}}).find("invalid delta = 0"), std::string::npos);
   EXPECT_NE(error_of(x, 30, 8, {{"delta", "abc"}}).find("invalid delta = abc"), std::string::npos);
   EXPECT_NE(error_of(x, 30, 8, {{"max_boxes", "-3"}}).find("invalid max_boxes = -3"), std::string::npos);
-  EXPECT_NE(error_of(x, 30, 8, {{"lines", "5"}}).find("invalid measure-param = lines=5: star takes method, delta, max_boxes"), std::string::npos);
+  EXPECT_NE(
+      error_of(x, 30, 8, {{"lines", "5"}}).find("invalid measure-param = lines=5: star takes method, delta, max_boxes"),
+      std::string::npos);
   const std::string budget = error_of(x, 30, 8, {{"method", "bounds"}, {"delta", "0.001"}, {"max_boxes", "100"}});
   EXPECT_NE(budget.find("invalid delta = 0.001"), std::string::npos) << budget;
   EXPECT_NE(budget.find("max_boxes = 100"), std::string::npos) << budget;

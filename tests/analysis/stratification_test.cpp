@@ -147,12 +147,15 @@ TEST(Stratification, MeasuresAndBadInput) {
   EXPECT_EQ(t.value, 0);
   EXPECT_EQ(t.extras.at("m"), 8);
   const PointSet sobol3 = points_of("sobol", 243, 3);
-  EXPECT_NE(error_of([&] { compute_measure("t-value", view(sobol3), {}); }).find("invalid n = 243"),
-            std::string::npos);
+  EXPECT_NE(error_of([&] { compute_measure("t-value", view(sobol3), {}); }).find("invalid n = 243"), std::string::npos);
   EXPECT_EQ(compute_measure("t-value", view(sobol3), {{{"base", "3"}}, 1}).extras.at("m"), 5);
-  EXPECT_NE(error_of([&] { compute_measure("t-value", view(sobol), {{{"base", "1"}}, 1}); }).find("invalid base = 1"),
+  EXPECT_NE(error_of([&] {
+              compute_measure("t-value", view(sobol), {{{"base", "1"}}, 1});
+            }).find("invalid base = 1"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { compute_measure("t-value", view(sobol), {{{"base", "x2"}}, 1}); }).find("invalid base = x2"),
+  EXPECT_NE(error_of([&] {
+              compute_measure("t-value", view(sobol), {{{"base", "x2"}}, 1});
+            }).find("invalid base = x2"),
             std::string::npos);
   EXPECT_NE(error_of([&] { net_t_value(view(sobol), 0); }).find("invalid base = 0"), std::string::npos);
   const PointSet rooks = points_of("n-rooks", 10, 2, "", 1);

@@ -227,9 +227,10 @@ int main() {
   int devices = 0;
   const cudaError_t status = cudaGetDeviceCount(&devices);
   if (status != cudaSuccess || devices == 0) {
-    std::printf("SKIPPED: no CUDA device to run the kernels on (cudaGetDeviceCount: %s, %d devices); "
-                "the kernels were compiled and their PTX is checked by cuda_ptx_check\n",
-                status == cudaSuccess ? "no error" : cudaGetErrorString(status), devices);
+    std::printf(
+        "SKIPPED: no CUDA device to run the kernels on (cudaGetDeviceCount: %s, %d devices); "
+        "the kernels were compiled and their PTX is checked by cuda_ptx_check\n",
+        status == cudaSuccess ? "no error" : cudaGetErrorString(status), devices);
     return skip_exit_code;
   }
   cudaDeviceProp properties{};

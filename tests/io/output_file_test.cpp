@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 
 /// A fresh folder per test (ctest runs the cases in parallel).
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("stratum_output_file_test_" + name + "_" + std::to_string(getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("stratum_output_file_test_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -196,7 +197,9 @@ TEST(OutputFile, RemovesStagingFilesOfDeadProcessesOnly) {
   EXPECT_TRUE(fs::exists(dir / alive));
   const fs::path folder = io::make_staging_folder(dir, "page");
   EXPECT_TRUE(fs::is_directory(folder));
-  EXPECT_EQ(folder.filename().string().rfind(".page" + std::string(io::staging_marker) + std::to_string(getpid()) + "-", 0), 0u)
+  EXPECT_EQ(
+      folder.filename().string().rfind(".page" + std::string(io::staging_marker) + std::to_string(getpid()) + "-", 0),
+      0u)
       << folder;
   fs::remove_all(dir);
 }
@@ -205,7 +208,8 @@ TEST(OutputGroup, RefusesTwoOutputsNamingTheSameFile) {
   const fs::path dir = scratch("same");
   std::ofstream(dir / "a.exr") << "x";
   fs::create_symlink("a.exr", dir / "alias.exr");
-  for (const std::string& second : {(dir / "a.exr").string(), (dir / "alias.exr").string(), (dir / "." / "a.exr").string()}) {
+  for (const std::string& second :
+       {(dir / "a.exr").string(), (dir / "alias.exr").string(), (dir / "." / "a.exr").string()}) {
     io::OutputGroup group;
     group.add("exr", (dir / "a.exr").string());
     group.add("variance", second);
@@ -275,7 +279,8 @@ TEST(Json, DeepNestingIsRefusedWithPlaceAndAShortMessage) {
   EXPECT_NE(message.find("deeper than 256 levels at line 1, column 257"), std::string::npos) << message;
   EXPECT_LT(message.size(), 300u);
   const std::string broken = message_of([&] { io::parse_json("{\n  \"a\": [1, 2,, 3]\n}", "configs", "c.json"); });
-  EXPECT_NE(broken.find("is not valid JSON at line 2, column 14 (near '  \"a\": [1, 2,, 3]')"), std::string::npos) << broken;
+  EXPECT_NE(broken.find("is not valid JSON at line 2, column 14 (near '  \"a\": [1, 2,, 3]')"), std::string::npos)
+      << broken;
   EXPECT_EQ(broken.find("json.exception"), std::string::npos) << broken;
   EXPECT_EQ(io::parse_json(std::string(256, '[') + std::string(256, ']'), "a", "b").size(), 1u);
   EXPECT_EQ(io::json_excerpt(nlohmann::json(std::string(500, 'a'))).size(), 63u);

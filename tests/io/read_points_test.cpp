@@ -30,7 +30,9 @@ std::string error_reading(const std::filesystem::path& path) {
   return "(no error)";
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 TEST(ReadPointsStrict, ReadsWhatStratumWritesInEveryFormat) {
   const auto dir = scratch("round_trip");
@@ -72,15 +74,16 @@ TEST(ReadPointsStrict, AWhitespaceOnlyLineIsBlank) {
   EXPECT_EQ(points(0, 0), 0.5);
   EXPECT_EQ(points(1, 1), 0.75);
   write_text(dir / "only.txt", "#1$#4.\n\v");
-  EXPECT_NE(error_reading(dir / "only.txt").find("holds no points"), std::string::npos) << error_reading(dir / "only.txt");
+  EXPECT_NE(error_reading(dir / "only.txt").find("holds no points"), std::string::npos)
+      << error_reading(dir / "only.txt");
   std::filesystem::remove_all(dir);
 }
 
 TEST(ReadPointsStrict, NamesTheLineOrRowAndColumnAtFault) {
   const auto dir = scratch("errors");
   const std::pair<std::string, std::string> cases[] = {
-      {"ragged.txt", "0.1 0.2\n0.3\n"},    {"word.txt", "0.1 0.2\n0.3 x1\n"}, {"nan.txt", "0.1 nan\n"},
-      {"inf.csv", "0.1,0.2\n-inf,0.3\n"}, {"hole.csv", "0.1,,0.2\n"},          {"empty.txt", ""},
+      {"ragged.txt", "0.1 0.2\n0.3\n"},     {"word.txt", "0.1 0.2\n0.3 x1\n"}, {"nan.txt", "0.1 nan\n"},
+      {"inf.csv", "0.1,0.2\n-inf,0.3\n"},   {"hole.csv", "0.1,,0.2\n"},        {"empty.txt", ""},
       {"blank.txt", "\n# only a comment\n"}};
   const std::string expected[] = {"line 2 has 1 values, line 1 (the first point) has 2",
                                   "line 2, column 2 is 'x1': not a number",
@@ -109,7 +112,8 @@ TEST(ReadPointsStrict, RejectsNonFiniteAndTruncatedNpy) {
   points.d = 2;
   points.data.reset(new double[4]{0.1, 0.2, 0.3, std::numeric_limits<double>::quiet_NaN()});
   io::write_points_file(dir / "nan.npy", points, io::PointFormat::npy);
-  EXPECT_NE(error_reading(dir / "nan.npy").find("point[1][1] is nan"), std::string::npos) << error_reading(dir / "nan.npy");
+  EXPECT_NE(error_reading(dir / "nan.npy").find("point[1][1] is nan"), std::string::npos)
+      << error_reading(dir / "nan.npy");
   points.data[3] = 0.4;
   io::write_points_file(dir / "ok.npy", points, io::PointFormat::npy);
   std::filesystem::resize_file(dir / "ok.npy", std::filesystem::file_size(dir / "ok.npy") - 8);

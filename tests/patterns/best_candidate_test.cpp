@@ -29,7 +29,8 @@ std::vector<double> brute_force(std::uint64_t n, unsigned d, std::uint64_t seed,
       for (std::uint64_t p = 0; p < i; ++p) nearest = std::min(nearest, distance2(&points[p * d], x, d, periodic));
       if (nearest > best) best = nearest, std::copy(x, x + d, winner);
     }
-    for (unsigned j = 0; j < d; ++j) points.push_back(std::min(winner[j] + BestCandidate::low_bits(seed, i, j), one_minus_epsilon_double));
+    for (unsigned j = 0; j < d; ++j)
+      points.push_back(std::min(winner[j] + BestCandidate::low_bits(seed, i, j), one_minus_epsilon_double));
   }
   return points;
 }

@@ -23,7 +23,8 @@ inline double min_distance(const std::vector<double>& points, unsigned d, bool p
   double best = 1e300;
   const std::size_t n = points.size() / d;
   for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b) best = std::min(best, distance2(&points[a * d], &points[b * d], d, periodic));
+    for (std::size_t b = a + 1; b < n; ++b)
+      best = std::min(best, distance2(&points[a * d], &points[b * d], d, periodic));
   return std::sqrt(best);
 }
 

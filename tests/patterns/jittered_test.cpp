@@ -13,7 +13,8 @@ namespace {
 // Every point in its own cell, for stratum shapes in d = 1..4, and the cells
 // of all points together cover the grid once.
 TEST(Jittered, OnePointPerStratum) {
-  const std::vector<std::vector<std::uint64_t>> shapes = {{7}, {1000}, {4, 8}, {5, 5}, {1, 9}, {3, 1, 5}, {4, 4, 4}, {2, 3, 2, 2}};
+  const std::vector<std::vector<std::uint64_t>> shapes = {{7},    {1000},    {4, 8},    {5, 5},
+                                                          {1, 9}, {3, 1, 5}, {4, 4, 4}, {2, 3, 2, 2}};
   for (const auto& strata : shapes) {
     for (std::uint64_t seed : {0ull, 1ull, 99ull}) {
       const Jittered jittered(StrataShape(strata), seed);

@@ -82,9 +82,8 @@ TEST(LatinHypercube, CoordinatesAreUncorrelatedOnAverage) {
 TEST(LatinHypercube, UnbiasedOverSeeds) {
   const double alpha = testing::sidak(0.001, 2);
   for (unsigned d : {2u, 4u}) {
-    const auto estimates = testing::estimates_over_seeds(400, d, [&](std::uint64_t seed) {
-      return points_of(LatinHypercube(16, d, seed));
-    });
+    const auto estimates = testing::estimates_over_seeds(
+        400, d, [&](std::uint64_t seed) { return points_of(LatinHypercube(16, d, seed)); });
     testing::expect_unbiased("n-rooks d=" + std::to_string(d), estimates, testing::test_integral(d), alpha);
   }
 }

@@ -58,7 +58,8 @@ TEST(LatinSquare, ChainStopsOnlyAtProperSquares) {
 TEST(LatinSquare, JacobsonMatthewsIsUniformOnOrderFour) {
   const int seeds = 11520;
   std::map<std::vector<std::uint32_t>, int> counts;
-  for (int s = 0; s < seeds; ++s) ++counts[square_of(LatinSquare(4, static_cast<std::uint64_t>(s), Method::jacobson_matthews))];
+  for (int s = 0; s < seeds; ++s)
+    ++counts[square_of(LatinSquare(4, static_cast<std::uint64_t>(s), Method::jacobson_matthews))];
   ASSERT_EQ(counts.size(), 576u);
   const double expected = seeds / 576.0;
   double chi2 = 0;
@@ -72,7 +73,8 @@ TEST(LatinSquare, PermutedCyclicReachesOnlyIsotopesOfTheCyclicGroup) {
   // squares are isotopes of Z_4 (3 x 4! x 3! = 432 squares), 1 of Z_2 x Z_2
   // (144). 6000 seeds reach all 432 (each missed with probability e^-13.9).
   std::map<std::vector<std::uint32_t>, int> counts;
-  for (int s = 0; s < 6000; ++s) ++counts[square_of(LatinSquare(4, static_cast<std::uint64_t>(s), Method::permuted_cyclic))];
+  for (int s = 0; s < 6000; ++s)
+    ++counts[square_of(LatinSquare(4, static_cast<std::uint64_t>(s), Method::permuted_cyclic))];
   EXPECT_EQ(counts.size(), 432u);
 }
 

@@ -27,7 +27,9 @@ std::vector<double> points_of(const CorrelatedMultiJittered& cmj) {
   return out;
 }
 
-std::size_t bin(double v, std::uint64_t cells) { return static_cast<std::size_t>(std::floor(v * static_cast<double>(cells))); }
+std::size_t bin(double v, std::uint64_t cells) {
+  return static_cast<std::size_t>(std::floor(v * static_cast<double>(cells)));
+}
 
 // Latin in both coordinates (n intervals) and one point per columns × rows stratum.
 void expect_multi_jittered(const std::vector<double>& x, std::uint64_t columns, std::uint64_t rows,
@@ -52,10 +54,10 @@ void expect_multi_jittered(const std::vector<double>& x, std::uint64_t columns, 
 }
 
 TEST(MultiJittered, LatinAndStratifiedForManyShapes) {
-  for (auto [m, k] : std::vector<std::pair<std::uint64_t, std::uint64_t>>{{1, 1}, {1, 7}, {4, 4}, {4, 8}, {8, 4}, {3, 5}, {16, 16}, {31, 33}})
+  for (auto [m, k] : std::vector<std::pair<std::uint64_t, std::uint64_t>>{
+           {1, 1}, {1, 7}, {4, 4}, {4, 8}, {8, 4}, {3, 5}, {16, 16}, {31, 33}})
     for (std::uint64_t seed : {0ull, 5ull})
-      expect_multi_jittered(points_of(MultiJittered(m, k, seed)), m, k,
-                            std::to_string(m) + "x" + std::to_string(k));
+      expect_multi_jittered(points_of(MultiJittered(m, k, seed)), m, k, std::to_string(m) + "x" + std::to_string(k));
 }
 
 TEST(MultiJittered, ClosestToSquareFactorization) {
@@ -165,12 +167,14 @@ TEST(CorrelatedMultiJittered, MatchesKenslersListing) {
   EXPECT_EQ(wide.columns(), 8u);
   EXPECT_EQ(wide.rows(), 4u);
   for (std::uint64_t i = 0; i < 32; ++i)
-    ASSERT_NEAR(wide.sample(i, 0), memo_cmj(static_cast<int>(i), 32, static_cast<int>(wide.pattern()), 2.0f).first, 2e-6);
+    ASSERT_NEAR(wide.sample(i, 0), memo_cmj(static_cast<int>(i), 32, static_cast<int>(wide.pattern()), 2.0f).first,
+                2e-6);
 }
 
 TEST(CorrelatedMultiJittered, LatinAndStratifiedWhenComplete) {
   // squares, m(m+1), aspect 0.5 and 2
-  for (auto [n, aspect] : std::vector<std::pair<std::uint64_t, double>>{{1, 1}, {16, 1}, {64, 1}, {1024, 1}, {20, 1}, {72, 1}, {32, 0.5}, {32, 2}, {4096, 1}})
+  for (auto [n, aspect] : std::vector<std::pair<std::uint64_t, double>>{
+           {1, 1}, {16, 1}, {64, 1}, {1024, 1}, {20, 1}, {72, 1}, {32, 0.5}, {32, 2}, {4096, 1}})
     for (std::uint64_t seed : {0ull, 77ull}) {
       const CorrelatedMultiJittered cmj(n, seed, aspect);
       ASSERT_TRUE(cmj.complete()) << n;
@@ -209,17 +213,18 @@ TEST(CorrelatedMultiJittered, RejectsBadArguments) {
 TEST(MultiJittered, UnbiasedOverSeeds) {
   const double alpha = testing::sidak(0.001, 3);
   const double truth = testing::test_integral(2);
-  testing::expect_unbiased("multi-jittered 3x5",
-                           testing::estimates_over_seeds(400, 2, [](std::uint64_t s) { return points_of(MultiJittered(3, 5, s)); }),
-                           truth, alpha);
-  testing::expect_unbiased("cmj 16", testing::estimates_over_seeds(400, 2, [](std::uint64_t s) {
-                             return points_of(CorrelatedMultiJittered(16, s));
-                           }),
-                           truth, alpha);
-  testing::expect_unbiased("cmj 10", testing::estimates_over_seeds(400, 2, [](std::uint64_t s) {
-                             return points_of(CorrelatedMultiJittered(10, s));
-                           }),
-                           truth, alpha);
+  testing::expect_unbiased(
+      "multi-jittered 3x5",
+      testing::estimates_over_seeds(400, 2, [](std::uint64_t s) { return points_of(MultiJittered(3, 5, s)); }), truth,
+      alpha);
+  testing::expect_unbiased(
+      "cmj 16",
+      testing::estimates_over_seeds(400, 2, [](std::uint64_t s) { return points_of(CorrelatedMultiJittered(16, s)); }),
+      truth, alpha);
+  testing::expect_unbiased(
+      "cmj 10",
+      testing::estimates_over_seeds(400, 2, [](std::uint64_t s) { return points_of(CorrelatedMultiJittered(10, s)); }),
+      truth, alpha);
 }
 
 }  // namespace

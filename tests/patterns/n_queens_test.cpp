@@ -97,8 +97,8 @@ TEST(NQueens, RandomSolverSolvesEveryN) {
 // n-queens condition when binned into n × n cells, for both methods.
 TEST(NQueens, PointsSatisfyTheQueensCondition) {
   for (Method method : {Method::random, Method::formula})
-    for (std::uint64_t n : {1ull, 4ull, 5ull, 6ull, 7ull, 8ull, 9ull, 12ull, 25ull, 35ull, 64ull, 100ull, 143ull,
-                            256ull, 1001ull})
+    for (std::uint64_t n :
+         {1ull, 4ull, 5ull, 6ull, 7ull, 8ull, 9ull, 12ull, 25ull, 35ull, 64ull, 100ull, 143ull, 256ull, 1001ull})
       for (std::uint64_t seed = 0; seed < 8; ++seed) {
         const NQueens queens(n, seed, method);
         std::vector<std::uint64_t> x, y;
@@ -254,10 +254,10 @@ std::vector<double> points_of(std::uint64_t n, std::uint64_t seed, Method method
 // With gcd(n, 6) = 1 the formula occupies every cell with probability 1/n, so
 // the estimates are unbiased: n = 7, 400 seeds, level 0.001.
 TEST(NQueens, FormulaUnbiasedWhenModular) {
-  testing::expect_unbiased("n-queens formula 7", testing::estimates_over_seeds(400, 2, [](std::uint64_t seed) {
-                             return points_of(7, seed, Method::formula);
-                           }),
-                           testing::test_integral(2), 0.001);
+  testing::expect_unbiased(
+      "n-queens formula 7",
+      testing::estimates_over_seeds(400, 2, [](std::uint64_t seed) { return points_of(7, seed, Method::formula); }),
+      testing::test_integral(2), 0.001);
 }
 
 // Random solutions with a random symmetry and jitter are not exactly unbiased
@@ -268,11 +268,10 @@ TEST(NQueens, FormulaUnbiasedWhenModular) {
 TEST(NQueens, RandomSolutionsPassTheUnbiasednessTest) {
   const double alpha = testing::sidak(0.001, 2);
   for (std::uint64_t n : {7ull, 64ull})
-    testing::expect_unbiased("n-queens random " + std::to_string(n),
-                             testing::estimates_over_seeds(400, 2, [n](std::uint64_t seed) {
-                               return points_of(n, seed, Method::random);
-                             }),
-                             testing::test_integral(2), alpha);
+    testing::expect_unbiased(
+        "n-queens random " + std::to_string(n),
+        testing::estimates_over_seeds(400, 2, [n](std::uint64_t seed) { return points_of(n, seed, Method::random); }),
+        testing::test_integral(2), alpha);
 }
 
 }  // namespace

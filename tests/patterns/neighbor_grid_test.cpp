@@ -20,7 +20,6 @@ std::vector<double> random_points(std::size_t n, unsigned d, std::uint64_t seed)
   return points;
 }
 
-
 // Squared distance from point p to the box [lo, hi], by brute force.
 double brute_box_distance2(const double* p, const double* lo, const double* hi, unsigned d, bool periodic) {
   double sum = 0;

@@ -41,14 +41,12 @@ double radial_chi2(unsigned d, double r, Offset offset, int samples) {
 TEST(AnnulusOffset, UniformByVolumeInTheAnnulus) {
   for (unsigned d = 1; d <= 6; ++d) {
     const double r = 0.01;
-    const double chi2 = radial_chi2(d, r, [&](std::uint64_t step, unsigned c, double* o) {
-      annulus_offset(d, r, hash64(7, step), c, o);
-    }, 40000);
+    const double chi2 = radial_chi2(
+        d, r, [&](std::uint64_t step, unsigned c, double* o) { annulus_offset(d, r, hash64(7, step), c, o); }, 40000);
     EXPECT_LT(chi2, critical(19)) << "d=" << d;
   }
-  const double chi2 = radial_chi2(2, 0.3, [](std::uint64_t step, unsigned c, double* o) {
-    annulus_offset_2d(0.3, hash64(7, step), c, o);
-  }, 40000);
+  const double chi2 = radial_chi2(
+      2, 0.3, [](std::uint64_t step, unsigned c, double* o) { annulus_offset_2d(0.3, hash64(7, step), c, o); }, 40000);
   EXPECT_LT(chi2, critical(19));
 }
 

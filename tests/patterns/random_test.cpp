@@ -29,7 +29,8 @@ TEST(RandomPattern, UniformPairs) {
   std::vector<int> hits(256, 0);
   const int n = 25600;
   for (int i = 0; i < n; ++i)
-    ++hits[static_cast<std::size_t>(random.sample(i, 0) * 16) * 16 + static_cast<std::size_t>(random.sample(i, 1) * 16)];
+    ++hits[static_cast<std::size_t>(random.sample(i, 0) * 16) * 16 +
+           static_cast<std::size_t>(random.sample(i, 1) * 16)];
   double chi2 = 0;
   for (int h : hits) chi2 += (h - 100.0) * (h - 100.0) / 100.0;
   const boost::math::chi_squared dist(255);

@@ -12,7 +12,8 @@
 namespace stratum {
 namespace {
 
-double min_distance(const std::vector<double>& points, const std::vector<std::uint32_t>& keep, unsigned d, bool periodic) {
+double min_distance(const std::vector<double>& points, const std::vector<std::uint32_t>& keep, unsigned d,
+                    bool periodic) {
   double best = 1e9;
   for (std::size_t a = 0; a < keep.size(); ++a)
     for (std::size_t b = a + 1; b < keep.size(); ++b) {

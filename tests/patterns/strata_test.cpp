@@ -53,16 +53,15 @@ TEST(CellCoordinate, LargeCountsStillStratify) {
 TEST(CellCoordinate, BelowExactlyAgreesWithFmaAcrossBoundaries) {
   int ties = 0, checked = 0;
   for (double n : {3.0, 7.0, 10.0, 1000.0, 1023.0, 10000019.0, 0x1.0p40 + 1})
-    for (double c : {1.0, 2.0, 5.0, 999.0, 4999999.0})
-      {
-        double x = c / n;
-        for (int step = 0; step < 32; ++step) x = std::nextafter(x, 0.0);
-        for (int step = 0; step < 64; ++step, x = std::nextafter(x, 2.0)) {
-          ties += x * n == c && std::fma(x, n, -c) != 0;
-          EXPECT_EQ(strata_detail::below_exactly(x, n, c), std::fma(x, n, -c) < 0) << x << " " << n << " " << c;
-          ++checked;
-        }
+    for (double c : {1.0, 2.0, 5.0, 999.0, 4999999.0}) {
+      double x = c / n;
+      for (int step = 0; step < 32; ++step) x = std::nextafter(x, 0.0);
+      for (int step = 0; step < 64; ++step, x = std::nextafter(x, 2.0)) {
+        ties += x * n == c && std::fma(x, n, -c) != 0;
+        EXPECT_EQ(strata_detail::below_exactly(x, n, c), std::fma(x, n, -c) < 0) << x << " " << n << " " << c;
+        ++checked;
       }
+    }
   EXPECT_GT(ties, 0);  // the case that needs fma was met
   EXPECT_EQ(checked, 7 * 5 * 64);
 }
@@ -82,14 +81,16 @@ TEST(CellCoordinate, SameAsTheFmaCorrection) {
     const std::uint64_t count = 1 + hash64(i, 1) % (i % 2 ? 1000 : 100000000);
     const std::uint64_t cell = hash64(i, 2) % count;
     const double offset = i % 4 == 0 ? 0x1.fffffffffffffp-1 - double(i % 64) * 0x1.0p-53 : bits_to_double(hash64(i, 3));
-    ASSERT_EQ(cell_coordinate(cell, offset, count), with_fma(cell, offset, count)) << cell << "/" << count << " " << offset;
+    ASSERT_EQ(cell_coordinate(cell, offset, count), with_fma(cell, offset, count))
+        << cell << "/" << count << " " << offset;
   }
 }
 
 TEST(CellCoordinate, CentreIsCorrectlyRounded) {
   for (std::uint64_t count : {3ull, 5ull, 6ull, 7ull, 100ull})
     for (std::uint64_t cell = 0; cell < count; ++cell)
-      EXPECT_EQ(cell_coordinate(cell, 0.5, count), (2.0 * static_cast<double>(cell) + 1.0) / (2.0 * static_cast<double>(count)));
+      EXPECT_EQ(cell_coordinate(cell, 0.5, count),
+                (2.0 * static_cast<double>(cell) + 1.0) / (2.0 * static_cast<double>(count)));
 }
 
 TEST(IntegerRoot, ExactAroundPerfectPowers) {

@@ -35,8 +35,7 @@ inline double product_test_mean(const double* x, std::size_t n, std::size_t d) {
 inline double product_test_integral() { return (std::exp(1.0) - 1) / 6; }
 
 /// Two-sided one-sample t-test of H0: E[estimate] = truth at level alpha.
-inline void expect_unbiased(const std::string& what, const std::vector<double>& estimates, double truth,
-                            double alpha) {
+inline void expect_unbiased(const std::string& what, const std::vector<double>& estimates, double truth, double alpha) {
   const auto r = static_cast<double>(estimates.size());
   double mean = 0;
   for (double e : estimates) mean += e;

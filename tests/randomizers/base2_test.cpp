@@ -105,8 +105,8 @@ TEST(Base2, HashOwenPinnedValuesAcrossTheDimensionCache) {
     std::uint64_t scrambled;
   };
   const Pin pins[] = {
-      {0ull, 0, 0x4540d111d02f1bdbull},     {1ull, 3, 0xf4e6f43397b86175ull},
-      {77ull, 15, 0x5d92f86095475a77ull},   {77ull, 16, 0x76362a4cfeeaf808ull},
+      {0ull, 0, 0x4540d111d02f1bdbull},      {1ull, 3, 0xf4e6f43397b86175ull},
+      {77ull, 15, 0x5d92f86095475a77ull},    {77ull, 16, 0x76362a4cfeeaf808ull},
       {12345ull, 39, 0x6dfd89e21295cf43ull}, {4294967305ull, 17, 0x80dbb8fe36cdf800ull},
       {~0ull, 1, 0x2acd1ea57b016134ull},
   };
@@ -138,7 +138,8 @@ TEST(Base2, HashOwenStepsWithExplicitConstantsAreTheBoundScramble) {
     EXPECT_EQ(static_cast<std::uint32_t>(bound.addend()), bound.seed32());
     for (int trial = 0; trial < 20; ++trial) {
       const std::uint64_t r = words();
-      ASSERT_EQ(HashOwenScrambler::scramble_reversed(r, bound.addend(), bound.multiplier()), bound.scramble_reversed(r));
+      ASSERT_EQ(HashOwenScrambler::scramble_reversed(r, bound.addend(), bound.multiplier()),
+                bound.scramble_reversed(r));
     }
   }
 }

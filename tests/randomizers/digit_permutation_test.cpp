@@ -53,13 +53,15 @@ TEST(RandomDigitPermutations, EachPositionGetsADifferentPermutation) {
       if (f(x) != g(x)) return true;
     return false;
   };
-  EXPECT_TRUE(differs([&](auto x) { return a.permute_digit(4, 0, x); }, [&](auto x) { return b.permute_digit(4, 0, x); }));
-  EXPECT_TRUE(differs([&](auto x) { return a.permute_digit(4, 0, x); }, [&](auto x) { return a.permute_digit(4, 1, x); }));
+  EXPECT_TRUE(
+      differs([&](auto x) { return a.permute_digit(4, 0, x); }, [&](auto x) { return b.permute_digit(4, 0, x); }));
+  EXPECT_TRUE(
+      differs([&](auto x) { return a.permute_digit(4, 0, x); }, [&](auto x) { return a.permute_digit(4, 1, x); }));
 }
 
 TEST(RandomDigitPermutations, MatchesTheDigitOracleAtAnyIndex) {
-  const RandomDigitPermutations full(42, kBases);          // tables for every index
-  const RandomDigitPermutations small(42, kBases, 1000);   // slow path past 1000
+  const RandomDigitPermutations full(42, kBases);         // tables for every index
+  const RandomDigitPermutations small(42, kBases, 1000);  // slow path past 1000
   for (unsigned dim = 0; dim < kBases.size(); ++dim)
     for (std::uint64_t index : {0ull, 1ull, 2ull, 999ull, 1000ull, 1001ull, 4096ull, 123456789ull, (1ull << 32) - 1,
                                 1ull << 32, (1ull << 32) + 1, (1ull << 40) + 12345, (1ull << 53) + 3, ~0ull}) {
@@ -138,8 +140,8 @@ TEST(RandomDigitPermutations, EachCoordinateIsUniformOverSeeds) {
   for (std::size_t t = 0; t < counts.size(); ++t) {
     double x = 0;
     for (int c : counts[t]) x += (c - seeds / double(bins)) * (c - seeds / double(bins)) / (seeds / double(bins));
-    EXPECT_GT(chi_squared_p(x, bins - 1), level) << "index " << indices[t / bases.size()] << " base "
-                                                 << bases[t % bases.size()] << " chi2 " << x;
+    EXPECT_GT(chi_squared_p(x, bins - 1), level)
+        << "index " << indices[t / bases.size()] << " base " << bases[t % bases.size()] << " chi2 " << x;
   }
 }
 

@@ -33,8 +33,8 @@ TEST(BaseBDigitalShift, BaseTwoIsXorWithARandomWord) {
 TEST(BaseBDigitalShift, AddsTheShiftDigitByDigitAtAnyIndex) {
   const BaseBDigitalShift full(11, kBases), small(11, kBases, 100);
   for (unsigned dim = 0; dim < kBases.size(); ++dim)
-    for (std::uint64_t index : {0ull, 1ull, 99ull, 100ull, 101ull, 4096ull, 987654321ull, (1ull << 32) + 3,
-                                (1ull << 50) + 1, ~0ull}) {
+    for (std::uint64_t index :
+         {0ull, 1ull, 99ull, 100ull, 101ull, 4096ull, 987654321ull, (1ull << 32) + 3, (1ull << 50) + 1, ~0ull}) {
       const std::uint32_t b = kBases[dim];
       long double expected = 0, scale = 1.0L / b;
       std::uint64_t rest = index;

@@ -84,11 +84,12 @@ TEST(Digits, WeightsAreFloorOfTwoToThe128OverPowers) {
 }
 
 TEST(Digits, FastDividerIsExactEverywhere) {
-  std::vector<std::uint64_t> numerators = {0, 1, 2, 3, 4095, 4096, 0xffffffffull, 0x100000000ull,
-                                           (1ull << 48) - 1, 1ull << 48, (1ull << 52) + 7, ~0ull, ~0ull - 1};
+  std::vector<std::uint64_t> numerators = {
+      0,     1,        2, 3, 4095, 4096, 0xffffffffull, 0x100000000ull, (1ull << 48) - 1, 1ull << 48, (1ull << 52) + 7,
+      ~0ull, ~0ull - 1};
   for (std::uint64_t k = 0; k < 2000; ++k) numerators.push_back(hash64(11, k) >> (k % 64));
-  for (std::uint64_t divisor : {2ull, 3ull, 5ull, 7ull, 243ull, 729ull, 2187ull, 3125ull, 4096ull, 4093ull, 8161ull,
-                                65536ull, 65521ull}) {
+  for (std::uint64_t divisor :
+       {2ull, 3ull, 5ull, 7ull, 243ull, 729ull, 2187ull, 3125ull, 4096ull, 4093ull, 8161ull, 65536ull, 65521ull}) {
     const digits_detail::FastDivider divider(divisor);
     EXPECT_GE(divider.limit(), std::uint64_t{1} << 48);
     for (std::uint64_t n : numerators) ASSERT_EQ(divider.quotient(n), n / divisor) << n << " / " << divisor;

@@ -32,7 +32,8 @@ TEST(ParamParser, IntegerWithANegativeRangeIsSigned) {
 
 TEST(ParamParser, IntegerFromZeroTakesAllOf64Bits) {
   const Param seed = params::integer("seed", "", "0", at_least(0));
-  EXPECT_EQ(std::get<std::uint64_t>(parse_param(seed, "18446744073709551615")), std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(std::get<std::uint64_t>(parse_param(seed, "18446744073709551615")),
+            std::numeric_limits<std::uint64_t>::max());
   EXPECT_EQ(std::get<std::uint64_t>(parse_param(seed, "0")), 0u);
   // 2^64 and a negative seed are refused, not wrapped to 2^64 - 1.
   EXPECT_NE(parse_error(seed, "18446744073709551616"), "");
@@ -69,7 +70,8 @@ TEST(ParamParser, RealRangesOpenAndClosed) {
 TEST(ParamParser, RealsThatDoNotSurviveReadingAreRefused) {
   const Param any = params::real("x", "", "", any_real());
   // Overflow to inf, underflow to a subnormal or 0, and the non-finite words.
-  for (const char* bad : {"1e999", "-1e999", "1e-320", "-1e-320", "1e-400", "inf", "-inf", "nan", "infinity", "0x1p3", "1.5.2", "1e"})
+  for (const char* bad :
+       {"1e999", "-1e999", "1e-320", "-1e-320", "1e-400", "inf", "-inf", "nan", "infinity", "0x1p3", "1.5.2", "1e"})
     EXPECT_NE(parse_error(any, bad), "") << "'" << bad << "' was accepted";
   EXPECT_EQ(parse_error(any, "1e-320"),
             "invalid x = 1e-320: is below the smallest normal double, 2.2e-308, so it would not read back as written: "
@@ -81,10 +83,12 @@ TEST(ParamParser, RealsThatDoNotSurviveReadingAreRefused) {
 
 TEST(ParamParser, ListsCheckEachElementAndTheCount) {
   const Param generator = params::integers("generator", "", "", at_least(1), Length{2, 3});
-  EXPECT_EQ(std::get<std::vector<std::int64_t>>(parse_param(generator, "1,55,133")), (std::vector<std::int64_t>{1, 55, 133}));
+  EXPECT_EQ(std::get<std::vector<std::int64_t>>(parse_param(generator, "1,55,133")),
+            (std::vector<std::int64_t>{1, 55, 133}));
   EXPECT_EQ(parse_error(generator, "1,0"),
             "invalid generator[1] = 0: must be an integer in [1, inf) (generator takes 2 to 3 integers)");
-  EXPECT_EQ(parse_error(generator, "1"), "invalid generator = (1 value): must be 2 to 3 integers in [1, inf), separated by ','");
+  EXPECT_EQ(parse_error(generator, "1"),
+            "invalid generator = (1 value): must be 2 to 3 integers in [1, inf), separated by ','");
   EXPECT_EQ(parse_error(generator, "1,2,3,4"),
             "invalid generator = (4 values): must be 2 to 3 integers in [1, inf), separated by ','");
   EXPECT_NE(parse_error(generator, "1,,2"), "");  // an empty element
@@ -126,7 +130,9 @@ TEST(ParamChecker, TypedNumbersMeetTheSameRules) {
   EXPECT_EQ(error_of([&] { check_param(n, {11}); }), "invalid n = 11: must be an integer in [1, 10]");
   EXPECT_EQ(error_of([&] { check_param(n, {1, 2}); }), "invalid n = (2 values): must be an integer in [1, 10]");
   const Param sizes = params::reals("sizes", "", "", above(0), Length{1, 2});
-  EXPECT_EQ(error_of([&] { check_param(sizes, {1, std::numeric_limits<double>::quiet_NaN()}); }),
+  EXPECT_EQ(error_of([&] {
+              check_param(sizes, {1, std::numeric_limits<double>::quiet_NaN()});
+            }),
             "invalid sizes[1] = nan: must be a finite real in (0, inf) (sizes takes 1 to 2 reals)");
   EXPECT_THROW(check_param(params::text("name", "", ""), {1}), std::logic_error);
 }
@@ -138,10 +144,17 @@ TEST(ParamBinding, DefaultsFillInAndUnknownKeysNameTheOption) {
   EXPECT_EQ(bound.integer("candidates"), 30);
   EXPECT_TRUE(bound.flag("periodic"));
   EXPECT_FALSE(bound.has("radius"));  // no default: the entry computes it
-  EXPECT_EQ(error_of([&] { bind_params("poisson-disk", schema, {{"lines", "5"}}, "measure-param"); }),
+  EXPECT_EQ(error_of([&] {
+              bind_params("poisson-disk", schema, {{"lines", "5"}}, "measure-param");
+            }),
             "invalid measure-param = lines=5: poisson-disk takes candidates, periodic, radius");
-  EXPECT_EQ(error_of([&] { bind_params("random", {}, {{"x", "1"}}); }), "invalid param = x=1: random takes no parameters");
-  EXPECT_EQ(error_of([&] { bind_params("poisson-disk", schema, {{"candidates", "0"}}); }),
+  EXPECT_EQ(error_of([&] {
+              bind_params("random", {}, {{"x", "1"}});
+            }),
+            "invalid param = x=1: random takes no parameters");
+  EXPECT_EQ(error_of([&] {
+              bind_params("poisson-disk", schema, {{"candidates", "0"}});
+            }),
             "invalid candidates = 0: must be an integer in [1, 1000]");
 }
 

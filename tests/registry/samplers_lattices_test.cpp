@@ -100,7 +100,8 @@ TEST(SamplersLattices, BadParametersNameTheParameter) {
   };
   const std::vector<Case> cases = {
       {request_of(89, 3, {{"generator", "1,55"}}), "generator", "has 2 entries; d = 3 needs 3"},
-      {request_of(89, 2, {{"generator", "1,0"}}), "generator[1]", "invalid generator[1] = 0: must be an integer in [1, inf)"},
+      {request_of(89, 2, {{"generator", "1,0"}}), "generator[1]",
+       "invalid generator[1] = 0: must be an integer in [1, inf)"},
       {request_of(89, 2, {{"generator", "1,89"}}), "generator", "[1, 89)"},
       {request_of(89, 2, {{"generator", "1,-3"}}), "generator[1]", "invalid generator[1] = -3"},
       {request_of(89, 2, {{"generator", "1,x"}}), "generator[1]", "integer"},

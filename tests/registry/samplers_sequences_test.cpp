@@ -34,7 +34,8 @@ TEST(HammersleyRegistry, FirstCoordinateIsRandomizedAndUnbiased) {
     testing::expect_unbiased("hammersley:" + randomize + " x_0", estimates, 0.3, alpha);
   }
   // d = 1 (i/N alone) is randomized too.
-  EXPECT_NE(sampler_points("hammersley", 8, 1, "owen", 1).data[0], sampler_points("hammersley", 8, 1, "owen", 2).data[0]);
+  EXPECT_NE(sampler_points("hammersley", 8, 1, "owen", 1).data[0],
+            sampler_points("hammersley", 8, 1, "owen", 2).data[0]);
 }
 
 // At N = 2^k every randomizer keeps coordinate 0 Latin and the (0, k, 2)-net
@@ -108,7 +109,8 @@ TEST(HaltonRegistry, EachRandomizerKeepsTheIntervalsOfAnyBase) {
       // The unscrambled points sit on the intervals' left ends (k/n, which
       // base 7 and 10 do not represent exactly): 1e-9 keeps them inside.
       for (std::uint64_t i = 0; i < n; ++i) ++count[static_cast<std::size_t>(points.data[i] * double(n) + 1e-9)];
-      EXPECT_TRUE(std::all_of(count.begin(), count.end(), [](int c) { return c == 1; })) << "base " << base << " " << randomize;
+      EXPECT_TRUE(std::all_of(count.begin(), count.end(), [](int c) { return c == 1; }))
+          << "base " << base << " " << randomize;
     }
   }
   // Cranley–Patterson shifts the points: one per interval no longer, but a rotation of φ_b.
@@ -123,9 +125,13 @@ TEST(HaltonRegistry, EachRandomizerKeepsTheIntervalsOfAnyBase) {
 }
 
 TEST(HaltonRegistry, BasesMustMatchTheDimension) {
-  EXPECT_EQ(testing::error_of([] { sampler_points("halton", 4, 2, "none", 0, 0, {{"bases", "3"}}); }),
+  EXPECT_EQ(testing::error_of([] {
+              sampler_points("halton", 4, 2, "none", 0, 0, {{"bases", "3"}});
+            }),
             "invalid bases = (1 value): give one base per dimension: d = 2");
-  EXPECT_EQ(testing::error_of([] { sampler_points("halton", 4, 1, "none", 0, 0, {{"bases", "1"}}); }),
+  EXPECT_EQ(testing::error_of([] {
+              sampler_points("halton", 4, 1, "none", 0, 0, {{"bases", "1"}});
+            }),
             "invalid bases[0] = 1: must be an integer in [2, 65536] (bases takes 1 to 1024 integers)");
 }
 

@@ -24,7 +24,8 @@ std::string spec_error(const std::string& text) {
 
 /// EXPECT that `message` contains every one of `parts`.
 void expect_contains(const std::string& message, std::initializer_list<std::string> parts) {
-  for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << message << "' lacks '" << part << "'";
+  for (const auto& part : parts)
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << message << "' lacks '" << part << "'";
 }
 
 TEST(SamplerSpec, ParsesTheFourForms) {
@@ -69,14 +70,13 @@ TEST(SamplerSpec, SyntaxErrorsNameTheSpecThePositionAndTheGrammar) {
   expect_contains(spec_error(":owen"), {"invalid sampler = :owen: ", "empty sampler name at position 1"});
   expect_contains(spec_error("sobol:"), {"invalid sampler = sobol:: ", "empty randomizer after ':' at position 6",
                                          "NAME[(KEY=VALUE,...)][:RANDOMIZER]"});
-  expect_contains(spec_error("lattice(generator=1,55"),
-                  {"invalid sampler = lattice(generator=1,55: ", "unbalanced parentheses",
-                   "'(' at position 8 is never closed"});
+  expect_contains(
+      spec_error("lattice(generator=1,55"),
+      {"invalid sampler = lattice(generator=1,55: ", "unbalanced parentheses", "'(' at position 8 is never closed"});
   expect_contains(spec_error("sobol)"), {"unbalanced parentheses", "')' at position 6 has no '('"});
   expect_contains(spec_error("sobol:owen)"), {"unbalanced parentheses", "')' at position 11 has no '('"});
   expect_contains(spec_error("jittered(=4x8)"), {"invalid sampler = jittered(=4x8): ", "empty key at position 10"});
-  expect_contains(spec_error("jittered(strata=)"),
-                  {"empty value for key 'strata' at position 17", "write KEY=VALUE"});
+  expect_contains(spec_error("jittered(strata=)"), {"empty value for key 'strata' at position 17", "write KEY=VALUE"});
   expect_contains(spec_error("lattice(generator=1,,2)"), {"empty value at position 21", "key 'generator'"});
   expect_contains(spec_error("poisson-disk(periodic=1,periodic=0)"),
                   {"duplicate key 'periodic' at position 25 (first at position 14)", "give each key once"});
@@ -84,8 +84,8 @@ TEST(SamplerSpec, SyntaxErrorsNameTheSpecThePositionAndTheGrammar) {
   expect_contains(spec_error("sobol()"), {"empty parameter list at position 6"});
   expect_contains(spec_error("jittered(strata=4x8)x"),
                   {"unexpected 'x' at position 21 after the parameters", "only :RANDOMIZER may follow ')'"});
-  expect_contains(spec_error("sobol:owen(x=1)"), {"unexpected '(' at position 11 in the randomizer",
-                                                  "parameters come before ':'"});
+  expect_contains(spec_error("sobol:owen(x=1)"),
+                  {"unexpected '(' at position 11 in the randomizer", "parameters come before ':'"});
   expect_contains(spec_error("sob ol"), {"unexpected ' ' at position 4 in the sampler name"});
   expect_contains(spec_error("sobol:ow=en"), {"unexpected '=' at position 9 in the randomizer"});
   expect_contains(spec_error("jittered(str ata=4)"), {"unexpected ' ' at position 13 in the key"});
@@ -93,8 +93,8 @@ TEST(SamplerSpec, SyntaxErrorsNameTheSpecThePositionAndTheGrammar) {
 
 TEST(SamplerSpec, RegistryErrorsListWhatIsAllowed) {
   // Unknown sampler: the near names.
-  expect_contains(spec_error("sobl:owen"), {"invalid sampler = sobl:owen: ", "unknown sampler 'sobl' at position 1",
-                                            "did you mean sobol"});
+  expect_contains(spec_error("sobl:owen"),
+                  {"invalid sampler = sobl:owen: ", "unknown sampler 'sobl' at position 1", "did you mean sobol"});
   expect_contains(spec_error("poisson"), {"unknown sampler 'poisson'", "poisson-disk"});
   // Nothing near: every name.
   expect_contains(spec_error("nosuch"), {"invalid sampler = nosuch: ", "unknown sampler 'nosuch'",
@@ -130,9 +130,9 @@ TEST(SamplerSpec, ListsSplitOnCommasOutsideParentheses) {
   EXPECT_EQ(split_sampler_list("sobol,lattice(generator=1,2,random"),
             (std::vector<std::string>{"sobol", "lattice(generator=1,2,random"}));
   EXPECT_EQ(split_sampler_list("sobol),random"), (std::vector<std::string>{"sobol)", "random"}));
-  expect_contains(error_of([] { parse_sampler_list("sobol,lattice(generator=1,2,random"); }),
-                  {"invalid sampler = lattice(generator=1,2,random: unbalanced parentheses",
-                   "'(' at position 8 is never closed"});
+  expect_contains(
+      error_of([] { parse_sampler_list("sobol,lattice(generator=1,2,random"); }),
+      {"invalid sampler = lattice(generator=1,2,random: unbalanced parentheses", "'(' at position 8 is never closed"});
   expect_contains(error_of([] { parse_sampler_list("sobol),random"); }),
                   {"invalid sampler = sobol): unbalanced parentheses: ')' at position 6 has no '('"});
   expect_contains(error_of([] { parse_sampler_list("sobol,nosuch"); }), {"invalid sampler = nosuch: "});
@@ -146,9 +146,12 @@ TEST(SamplerSpec, CombinesParamsAndRandomizerAndRefusesConflicts) {
             (SamplerSpec{"poisson-disk", {{"candidates", "5"}, {"periodic", "1"}}, ""}));
   expect_contains(error_of([] { combine_sampler_options("sobol:owen", {}, "xor"); }),
                   {"invalid randomize = xor: ", "conflicts with the randomizer of the sampler spec sobol:owen"});
-  expect_contains(error_of([] { combine_sampler_options("poisson-disk(periodic=1)", {"periodic=0"}, ""); }),
-                  {"invalid param = periodic=0: ", "conflicts with periodic=1 in the sampler spec poisson-disk(periodic=1)"});
-  expect_contains(error_of([] { combine_sampler_options("poisson-disk", {"periodic=0", "periodic=1"}, ""); }),
+  expect_contains(
+      error_of([] { combine_sampler_options("poisson-disk(periodic=1)", {"periodic=0"}, ""); }),
+      {"invalid param = periodic=0: ", "conflicts with periodic=1 in the sampler spec poisson-disk(periodic=1)"});
+  expect_contains(error_of([] {
+                    combine_sampler_options("poisson-disk", {"periodic=0", "periodic=1"}, "");
+                  }),
                   {"invalid param = periodic=1: ", "conflicts with -p periodic=0"});
   expect_contains(error_of([] { combine_sampler_options("poisson-disk", {"periodc=1"}, ""); }),
                   {"invalid param = periodc=1: ", "poisson-disk takes candidates, periodic"});
@@ -172,8 +175,8 @@ TEST(SamplerSpec, SeedsAreExactlyTheIntegersBelowTwoToThe64) {
   EXPECT_EQ(parse_seed("0"), 0u);
   EXPECT_EQ(parse_seed("42"), 42u);
   EXPECT_EQ(parse_seed("18446744073709551615"), ~std::uint64_t{0});
-  for (const char* bad : {"-1", "18446744073709551616", "99999999999999999999999", "1e3", "abc", "", "+5", " 5", "5 ",
-                          "0x10", "1.0"}) {
+  for (const char* bad :
+       {"-1", "18446744073709551616", "99999999999999999999999", "1e3", "abc", "", "+5", " 5", "5 ", "0x10", "1.0"}) {
     const std::string message = error_of([&] { parse_seed(bad); });
     expect_contains(message, {"invalid seed = ", "must be an integer in [0, 2^64)"});
     if (*bad) {
@@ -193,7 +196,8 @@ TEST(SamplerSpec, ThreadRuleZeroIsEveryCore) {
   EXPECT_EQ(resolve_threads(1024), 1024u);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   EXPECT_EQ(resolve_threads(0), std::min(cores, 1024u));
-  expect_contains(error_of([] { resolve_threads(-1); }), {"invalid threads = -1: must be an integer in [0, 1024] (0: every core)"});
+  expect_contains(error_of([] { resolve_threads(-1); }),
+                  {"invalid threads = -1: must be an integer in [0, 1024] (0: every core)"});
   expect_contains(error_of([] { resolve_threads(1025); }), {"invalid threads = 1025: "});
 }
 

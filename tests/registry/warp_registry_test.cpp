@@ -31,7 +31,8 @@ struct Configuration {
 /// warp with required parameters needs a line here (its tests fail until then).
 WarpParams example_parameters(const std::string& name) {
   if (name == "piecewise-1d") return {{"values", {1, 3, 0.5, 2, 4}}, {"width", {5}}};
-  if (name == "piecewise-2d") return {{"values", {1, 2, 0.5, 3, 0.2, 1, 2, 1, 4, 1, 1, 2}}, {"width", {4}}, {"height", {3}}};
+  if (name == "piecewise-2d")
+    return {{"values", {1, 2, 0.5, 3, 0.2, 1, 2, 1, 4, 1, 1, 2}}, {"width", {4}}, {"height", {3}}};
   if (name == "alias") return {{"values", {1, 3, 0.5, 2, 4}}};
   return {};
 }
@@ -249,7 +250,8 @@ TEST(WarpRegistry, PdfIntegratesToOne) {
       box[0] -= gx, box[1] += gx, box[2] -= gy, box[3] += gy;
       const double hx = (box[1] - box[0]) / m, hy = (box[3] - box[2]) / m;
       for (int j = 0; j < m; ++j) {
-        for (int i = 0; i < m; ++i) points[2 * i] = box[0] + (i + 0.5) * hx, points[2 * i + 1] = box[2] + (j + 0.5) * hy;
+        for (int i = 0; i < m; ++i)
+          points[2 * i] = box[0] + (i + 0.5) * hx, points[2 * i + 1] = box[2] + (j + 0.5) * hy;
         const auto pdf = warp_pdf(*warp, points.data(), m);
         for (double v : pdf) total += v * hx * hy;
       }

@@ -93,7 +93,8 @@ TEST(RenderBsdf, GlossyLobeConservesEnergy) {
   // Šidák over 9 cases at family α = 0.01), and never exceeds ρ; at normal
   // incidence it is ρ exactly (Lafortune, Willems 1994).
   const double rho = 0.8;
-  const double z_max = boost::math::quantile(boost::math::complement(boost::math::normal(), testing::sidak_alpha(0.01, 9) / 2));
+  const double z_max =
+      boost::math::quantile(boost::math::complement(boost::math::normal(), testing::sidak_alpha(0.01, 9) / 2));
   for (double exponent : {1.0, 10.0, 100.0})
     for (double theta : {0.0, 45.0, 80.0}) {
       const Bsdf bsdf(glossy(exponent, rho), {0, 0, 1}, incident(theta));

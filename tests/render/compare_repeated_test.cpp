@@ -25,7 +25,7 @@ TEST(CompareRepeated, StatisticsHaveTheirClosedForms) {
   EXPECT_DOUBLE_EQ(rows[1].mse.standard_error, 0.125);  // sd 0.25/sqrt(2) over sqrt(2)
   EXPECT_DOUBLE_EQ(rows[1].median_seconds, 2);
   EXPECT_NEAR(rows[1].mse_ratio.estimate, std::sqrt(8.0), 1e-12);  // geometric mean of 2 and 4
-  EXPECT_LT(rows[1].mse_ratio.low, 2);  // log ratios ln 2, ln 4: t(1) at 97.5% is 12.7
+  EXPECT_LT(rows[1].mse_ratio.low, 2);                             // log ratios ln 2, ln 4: t(1) at 97.5% is 12.7
   EXPECT_NEAR(rows[1].time_ratio.estimate, 2, 1e-12);
   EXPECT_NEAR(rows[1].time_ratio.low, 2, 1e-12);  // no timing noise: a resolved ratio
   EXPECT_TRUE(rows[1].time_resolved);

@@ -30,7 +30,8 @@ TEST(Compare, ErrorMeasuresHaveTheirClosedForms) {
 
 TEST(Compare, ConfigsAreParsedAndCheckedByName) {
   const auto configs = parse_configs(nlohmann::json::parse(R"([{"label": "a", "spp": 8, "light_samples": 3,
-      "light_strategy": "solid-angle", "sampler": "sobol", "pixel_centers": true}])"), 2, 5);
+      "light_strategy": "solid-angle", "sampler": "sobol", "pixel_centers": true}])"),
+                                     2, 5);
   ASSERT_EQ(configs.size(), 1u);
   EXPECT_EQ(configs[0].label, "a");
   EXPECT_EQ(configs[0].settings.sampler.spp, 8u);
@@ -50,7 +51,8 @@ TEST(Compare, ConfigsAreParsedAndCheckedByName) {
   EXPECT_NE(message(R"([{"integrator": "bdpt"}])").find("integrator"), std::string::npos);
   EXPECT_NE(message(R"([])").find("configs"), std::string::npos);
   EXPECT_THROW(builtin_comparison("nope", 1, 0), invalid_argument);
-  for (const auto& [name, description] : builtin_comparisons()) EXPECT_FALSE(builtin_comparison(name, 1, 0).empty()) << name;
+  for (const auto& [name, description] : builtin_comparisons())
+    EXPECT_FALSE(builtin_comparison(name, 1, 0).empty()) << name;
 }
 
 Scene small_box() {

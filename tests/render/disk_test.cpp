@@ -34,9 +34,9 @@ constexpr double pi = std::numbers::pi;
 Scene disk_scene(double r, Vec3 center, const std::string& extra = "", const std::string& normal = "[0, -1, 0]") {
   const auto num = [](double v) { return std::to_string(v); };
   return parse_scene(R"({"materials": {"lamp": {"reflectance": [0, 0, 0], "emission": [2, 2, 2]}},
-    "shapes": [{"type": "disk", "center": [)" + num(center.x) + ", " + num(center.y) + ", " + num(center.z) +
-                         R"(], "normal": )" + normal + R"(, "radius": )" + num(r) + extra +
-                         R"(, "material": "lamp"}]})",
+    "shapes": [{"type": "disk", "center": [)" +
+                         num(center.x) + ", " + num(center.y) + ", " + num(center.z) + R"(], "normal": )" + normal +
+                         R"(, "radius": )" + num(r) + extra + R"(, "material": "lamp"}]})",
                      "disk");
 }
 
@@ -132,7 +132,7 @@ TEST(RenderExactDisk, IrradianceOnTheAxisMatchesTheClosedForm) {
   const Scene polygon = disk_scene(r, {0, h, 0}, R"(, "segments": 16)");
   for (LightStrategy strategy : {LightStrategy::area, LightStrategy::solid_angle}) {
     const auto [mean, se] = irradiance(disk, {0, 0, 0}, {0, 1, 0}, strategy, 200000);
-    EXPECT_LT(se, 2e-3 * exact);                          // the test has the power to see the polygon's error
+    EXPECT_LT(se, 2e-3 * exact);  // the test has the power to see the polygon's error
     EXPECT_LT(std::abs(mean - exact), 3.29 * se) << mean << " vs " << exact;  // two-sided α = 0.001
   }
   // The 16-gon lacks 2.6% of the area: its irradiance is visibly below E.
@@ -186,7 +186,9 @@ class RenderExactDiskChi2 : public testing::Chi2Fixture<::testing::TestWithParam
 
 TEST_P(RenderExactDiskChi2, LightDirectionsFollowTheAreaDensityInSolidAngle) {
   const MovingDiskView v;
-  const auto pdf = [&](const double* p) { return disk_density(v.center, v.normal, 0.8, v.x, v.frame.to_world({p[0], p[1], p[2]})); };
+  const auto pdf = [&](const double* p) {
+    return disk_density(v.center, v.normal, 0.8, v.x, v.frame.to_world({p[0], p[1], p[2]}));
+  };
   const auto sample = [&](const double* u, double* out) {
     const auto s = sample_light(v.scene, v.scene.lights[0], v.x, v.n, 0.5, {u[0], u[1]}, GetParam().strategy);
     if (!s) {
@@ -206,7 +208,8 @@ TEST_P(RenderExactDiskChi2, LightDirectionsFollowTheAreaDensityInSolidAngle) {
 INSTANTIATE_TEST_SUITE_P(Strategies, RenderExactDiskChi2,
                          ::testing::Values(DiskStrategy{"area", LightStrategy::area, 23},
                                            DiskStrategy{"solid-angle", LightStrategy::solid_angle, 24},
-                                           DiskStrategy{"projected-solid-angle", LightStrategy::projected_solid_angle, 25}),
+                                           DiskStrategy{"projected-solid-angle", LightStrategy::projected_solid_angle,
+                                                        25}),
                          [](const auto& info) { return testing::chi2_param_name(info.param.name); });
 
 // Each sample carries the area density, and light_pdf of the hit it leads to agrees (MIS).
@@ -215,14 +218,15 @@ TEST(RenderExactDisk, LightSamplesCarryTheirDensityAndLightPdfAgrees) {
   const auto& [normal, scene, x, n, center, axis, z_min, frame] = v;
   const Accelerator accelerator(scene);
   for (int i = 0; i < 500; ++i) {
-    const auto s = sample_light(scene, scene.lights[0], x, n, 0.5, {uniform01(5, i, 0), uniform01(5, i, 1)},
-                                LightStrategy::area);
+    const auto s =
+        sample_light(scene, scene.lights[0], x, n, 0.5, {uniform01(5, i, 0), uniform01(5, i, 1)}, LightStrategy::area);
     ASSERT_TRUE(s);
     EXPECT_NEAR(s->pdf, disk_density(center, normal, 0.8, x, s->wi), 1e-9 * s->pdf);
     const auto hit = accelerator.intersect({x, s->wi, 0.5});
     ASSERT_TRUE(hit);
     EXPECT_NEAR(hit->t, s->distance, 1e-5 * s->distance);
-    for (LightStrategy strategy : {LightStrategy::area, LightStrategy::solid_angle, LightStrategy::projected_solid_angle})
+    for (LightStrategy strategy :
+         {LightStrategy::area, LightStrategy::solid_angle, LightStrategy::projected_solid_angle})
       EXPECT_NEAR(light_pdf(scene, scene.lights[0], x, n, 0.5, s->wi, &*hit, strategy), s->pdf, 1e-5 * s->pdf);
   }
 }
@@ -356,8 +360,8 @@ TEST(RenderExactDisk, BadValuesAreRefusedByName) {
     return std::string("no error");
   };
   const auto json_disk = [](const std::string& normal, const std::string& radius) {
-    return parse_scene(R"({"materials": {"m": {}}, "shapes": [{"type": "disk", "center": [0, 0, 0], "normal": )" + normal +
-                           R"(, "radius": )" + radius + R"(, "material": "m"}]})",
+    return parse_scene(R"({"materials": {"m": {}}, "shapes": [{"type": "disk", "center": [0, 0, 0], "normal": )" +
+                           normal + R"(, "radius": )" + radius + R"(, "material": "m"}]})",
                        "bad");
   };
   EXPECT_NE(message([&] { json_disk("[0, 1, 0]", "0"); }).find("shapes[0].radius = 0"), std::string::npos);
@@ -392,7 +396,8 @@ TEST(RenderExactDisk, TheBackSideNeitherEmitsNorHasADensity) {
   const Scene scene = disk_scene(1, {0, 2, 0});
   const Accelerator accelerator(scene);
   const Vec3 x{0.2, 4, 0.1}, n{0, -1, 0};
-  for (LightStrategy strategy : {LightStrategy::area, LightStrategy::solid_angle, LightStrategy::projected_solid_angle}) {
+  for (LightStrategy strategy :
+       {LightStrategy::area, LightStrategy::solid_angle, LightStrategy::projected_solid_angle}) {
     for (int i = 0; i < 100; ++i)
       EXPECT_FALSE(sample_light(scene, scene.lights[0], x, n, 0, {uniform01(8, i, 0), uniform01(8, i, 1)}, strategy));
     const Vec3 wi = normalize(Vec3{0.1, -1, 0.05});

@@ -41,8 +41,8 @@ std::vector<double> draws(PixelSampler& sampler, std::uint32_t x, std::uint32_t 
   return out;
 }
 
-const std::vector<std::string> progressive = {"sobol", "halton", "pmj02", "random", "kronecker", "lattice-sequence",
-                                              "faure", "zero-two"};
+const std::vector<std::string> progressive = {"sobol",     "halton",           "pmj02", "random",
+                                              "kronecker", "lattice-sequence", "faure", "zero-two"};
 
 TEST(Frames, AProgressiveSamplersFrameKIsItsSamplesKTimesSppOnward) {
   // Halton at frame 150 of 16 spp starts at sample 2400, past the direct
@@ -52,7 +52,8 @@ TEST(Frames, AProgressiveSamplersFrameKIsItsSamplesKTimesSppOnward) {
       PixelSampler framed(sampler_settings(name, spp, frame));
       PixelSampler whole(sampler_settings(name, spp * (frame + 1), 0));
       for (std::uint32_t i = 0; i < spp; ++i)
-        EXPECT_EQ(draws(framed, 2, 5, i), draws(whole, 2, 5, frame * spp + i)) << name << " spp " << spp << " frame " << frame;
+        EXPECT_EQ(draws(framed, 2, 5, i), draws(whole, 2, 5, frame * spp + i))
+            << name << " spp " << spp << " frame " << frame;
     }
 }
 
@@ -110,7 +111,8 @@ TEST(Frames, FramesOfAProgressiveSamplerAveragedAreOneRenderAtKTimesSpp) {
 
 /// Pearson's correlation of the two frames' per-pixel errors (luminance
 /// against a 1024-spp reference) at 1 spp on the penumbra scene.
-double error_correlation(const std::string& sampler, std::uint32_t frame_a, std::uint32_t frame_b, std::size_t* pixels) {
+double error_correlation(const std::string& sampler, std::uint32_t frame_a, std::uint32_t frame_b,
+                         std::size_t* pixels) {
   Scene scene = penumbra_scene();
   scene.camera.width = scene.camera.height = 32;
   RenderSettings s;

@@ -16,7 +16,8 @@ inline std::pair<double, double> irradiance(const Scene& scene, Vec3 x, Vec3 n, 
                                             std::uint64_t seed) {
   double sum = 0, sum2 = 0;
   for (int i = 0; i < samples; ++i) {
-    const auto s = sample_light(scene, scene.lights[0], x, n, 0, {uniform01(seed, i, 0), uniform01(seed, i, 1)}, strategy);
+    const auto s =
+        sample_light(scene, scene.lights[0], x, n, 0, {uniform01(seed, i, 0), uniform01(seed, i, 1)}, strategy);
     const double v = s ? s->radiance.x * std::max(0.0, dot(n, s->wi)) / s->pdf : 0.0;
     sum += v, sum2 += v * v;
   }

@@ -71,7 +71,9 @@ testing::Chi2Result light_chi2(const Scene& scene, const Light& light, Vec3 x, V
 
 Scene one_light(const std::string& shape) {
   return parse_scene(R"({"materials": {"lamp": {"reflectance": [0, 0, 0], "emission": [3, 2, 1]}},
-                         "shapes": [)" + shape + R"(]})", "light");
+                         "shapes": [)" +
+                         shape + R"(]})",
+                     "light");
 }
 
 TEST_F(RenderLightSamplingChi2, SphereConeDirectionsAreUniformOverTheCone) {
@@ -106,7 +108,8 @@ TEST_F(RenderLightSamplingChi2, TriangleMeshDirectionsFollowAreaPickThenUniformS
   const Vec3 v[6] = {{-1, 2, 0}, {0, 2, 0}, {-1, 2, 1}, {0.2, 2.5, -1}, {2.2, 2.5, -1}, {0.2, 2.5, 1}};
   const double omega0 = solid_angle(v[0], v[1], v[2], x), omega1 = solid_angle(v[3], v[4], v[5], x);
   const auto density = [&](Vec3 w) {
-    return (crosses(x, w, v[0], v[1], v[2]) ? 0.2 / omega0 : 0.0) + (crosses(x, w, v[3], v[4], v[5]) ? 0.8 / omega1 : 0.0);
+    return (crosses(x, w, v[0], v[1], v[2]) ? 0.2 / omega0 : 0.0) +
+           (crosses(x, w, v[3], v[4], v[5]) ? 0.8 / omega1 : 0.0);
   };
   const Vec3 axis{0.3, 2.2, 0.1};
   double z_min = 1;
@@ -191,7 +194,8 @@ TEST(RenderLightSampling, PdfOfAHitEqualsTheSampledPdf) {
                  {"type": "disk", "center": [-2, 2.5, 0], "normal": [0.3, -1, 0], "radius": 0.8, "segments": 16,
                   "material": "lamp"},
                  {"type": "disk", "center": [0.5, 2.8, -1.5], "normal": [-0.2, -1, 0.4], "radius": 0.6,
-                  "motion": [0.8, 0, 0.5], "material": "lamp"}]})", "pdf");
+                  "motion": [0.8, 0, 0.5], "material": "lamp"}]})",
+                                  "pdf");
   ASSERT_EQ(scene.lights.size(), 3u);
   ASSERT_EQ(scene.shapes[2].type, ShapeType::disk);
   const Accelerator accelerator(scene);
@@ -232,7 +236,8 @@ Scene sphere_and_triangle_scene() {
       {"type": "sphere", "center": [1.5, 2.6, 0.5], "radius": 0.7, "motion": [0, 0, -0.5], "material": "warm"},
       {"type": "triangles", "vertices": [[-3.5, 2.5, 1], [-1.5, 2.5, 3], [-3.5, 1.8, 3]], "indices": [[0, 2, 1]],
        "material": "lamp"}
-    ]})", "sphere-triangle");
+    ]})",
+                     "sphere-triangle");
 }
 
 TEST(RenderLightSampling, SolidAngleAndMisImagesConvergeToTheAreaImage) {

@@ -101,7 +101,7 @@ TEST(PixelSampler, BadSettingsAreNamed) {
   EXPECT_NE(message(settings("nope", 4)).find("sampler"), std::string::npos);
   EXPECT_NE(message(settings("random", 0)).find("spp"), std::string::npos);
   EXPECT_NE(message(settings("random", 16, "sideways")).find("time-pattern"), std::string::npos);
-  EXPECT_NE(message(settings("random", 8, "cook")).find("spp = 8"), std::string::npos);   // not m²
+  EXPECT_NE(message(settings("random", 8, "cook")).find("spp = 8"), std::string::npos);            // not m²
   EXPECT_NE(message(settings("random", 36, "magic-square")).find("spp = 36"), std::string::npos);  // m = 6
 }
 
@@ -182,7 +182,8 @@ TEST(PixelSampler, HaltonSetsEqualTheRegistry) {
         request.seed = seed;
         request.randomize = randomize;
         const PointSet reference = generate_points("halton", request);
-        for (std::size_t i = 0; i < 2 * n; ++i) ASSERT_EQ(drawn.data[i], reference.data[i]) << randomize << " " << n << " " << i;
+        for (std::size_t i = 0; i < 2 * n; ++i)
+          ASSERT_EQ(drawn.data[i], reference.data[i]) << randomize << " " << n << " " << i;
       }
   }
 }
@@ -193,8 +194,8 @@ TEST(PixelSampler, HaltonSetsEqualTheRegistry) {
 /// positions past the 53rd bit), and ⌊3h/2^64⌋ against the 128-bit product at its thresholds.
 TEST(PixelSampler, HaltonZeroImagesEqualTheRule) {
   using u128 = unsigned __int128;
-  for (std::uint64_t h : {0ull, 1ull, 0x5555555555555555ull, 0x5555555555555556ull, 0xAAAAAAAAAAAAAAAAull,
-                          0xAAAAAAAAAAAAAAABull, ~0ull})
+  for (std::uint64_t h :
+       {0ull, 1ull, 0x5555555555555555ull, 0x5555555555555556ull, 0xAAAAAAAAAAAAAAAAull, 0xAAAAAAAAAAAAAAABull, ~0ull})
     EXPECT_EQ(high_of_three_times(h), std::uint32_t((u128{h} * 3) >> 64)) << h;
   for (std::uint64_t i = 0; i < 100000; ++i) {
     const std::uint64_t h = hash64(i);

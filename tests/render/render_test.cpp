@@ -63,7 +63,8 @@ Scene soft_shadow_scene() {
   scene.camera.look_at = {0, 0, 0};
   scene.camera.fov_degrees = 50;
   scene.camera.width = scene.camera.height = 12;
-  scene.materials = {{"floor", MaterialType::diffuse, {0.8, 0.8, 0.8}, {}}, {"lamp", MaterialType::diffuse, {0, 0, 0}, {5, 5, 5}}};
+  scene.materials = {{"floor", MaterialType::diffuse, {0.8, 0.8, 0.8}, {}},
+                     {"lamp", MaterialType::diffuse, {0, 0, 0}, {5, 5, 5}}};
   Shape floor;
   floor.type = ShapeType::quad;
   floor.corner = {-5, 0, 5};

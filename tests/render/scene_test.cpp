@@ -23,7 +23,8 @@ std::string error_of(const std::string& json) {
 double triangle_area(const Shape& shape) {
   double area = 0;
   for (const auto& t : shape.indices)
-    area += 0.5 * length(cross(shape.vertices[t[1]] - shape.vertices[t[0]], shape.vertices[t[2]] - shape.vertices[t[0]]));
+    area +=
+        0.5 * length(cross(shape.vertices[t[1]] - shape.vertices[t[0]], shape.vertices[t[2]] - shape.vertices[t[0]]));
   return area;
 }
 
@@ -89,21 +90,37 @@ TEST(SceneJson, SyntaxErrorsGiveLineAndColumn) {
 
 TEST(SceneJson, BadValuesAreNamed) {
   EXPECT_NE(error_of(R"({"materials": {}, "shapes": [], "colour": 1})").find("colour"), std::string::npos);
-  EXPECT_NE(error_of(R"({"materials": {"m": {}}, "shapes": [{"type": "sphere", "center": [0,0,0], "radius": -1, "material": "m"}]})")
-                .find("shapes[0].radius"), std::string::npos);
-  EXPECT_NE(error_of(R"({"materials": {"m": {}}, "shapes": [{"type": "cone", "material": "m"}]})").find("shapes[0].type"),
+  EXPECT_NE(
+      error_of(
+          R"({"materials": {"m": {}}, "shapes": [{"type": "sphere", "center": [0,0,0], "radius": -1, "material": "m"}]})")
+          .find("shapes[0].radius"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"materials": {"m": {}}, "shapes": [{"type": "cone", "material": "m"}]})").find("shapes[0].type"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(
+          R"({"materials": {"m": {}}, "shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "x"}]})")
+          .find("shapes[0].material"),
+      std::string::npos);
+  EXPECT_NE(error_of(R"({"materials": {"m": {"reflectance": [2, 0, 0]}}, "shapes": []})").find("reflectance"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"materials": {"m": {}}, "shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "x"}]})")
-                .find("shapes[0].material"), std::string::npos);
-  EXPECT_NE(error_of(R"({"materials": {"m": {"reflectance": [2, 0, 0]}}, "shapes": []})").find("reflectance"), std::string::npos);
-  EXPECT_NE(error_of(R"({"camera": {"fov": 200}, "materials": {}, "shapes": []})").find("camera.fov"), std::string::npos);
-  EXPECT_NE(error_of(R"({"camera": {"resolution": [100000, 10]}, "materials": {}, "shapes": []})").find("camera.resolution"),
+  EXPECT_NE(error_of(R"({"camera": {"fov": 200}, "materials": {}, "shapes": []})").find("camera.fov"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"materials": {"m": {}}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge_u": [1,0,0], "edge_v": [2,0,0], "material": "m"}]})")
-                .find("shapes[0]"), std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"camera": {"resolution": [100000, 10]}, "materials": {}, "shapes": []})").find("camera.resolution"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(
+          R"({"materials": {"m": {}}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge_u": [1,0,0], "edge_v": [2,0,0], "material": "m"}]})")
+          .find("shapes[0]"),
+      std::string::npos);
   // JSON has no Inf: an overflowing literal is refused as not finite.
-  EXPECT_NE(error_of(R"({"materials": {"m": {}}, "shapes": [{"type": "sphere", "center": [1e999,0,0], "radius": 1, "material": "m"}]})")
-                .find("finite"), std::string::npos);
+  EXPECT_NE(
+      error_of(
+          R"({"materials": {"m": {}}, "shapes": [{"type": "sphere", "center": [1e999,0,0], "radius": 1, "material": "m"}]})")
+          .find("finite"),
+      std::string::npos);
 }
 
 }  // namespace

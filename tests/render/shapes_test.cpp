@@ -33,7 +33,8 @@ std::string message_of(const std::function<void()>& f) {
 TEST(RenderObj, ReadsVerticesAndFaces) {
   const ObjMesh mesh = parse_obj(
       "# a unit square and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"
-      "o square\nf 1/1/1 2/1/1 3//1 4\nv 2 0 0  # fifth\nf -1 2 3\n", "mem.obj");
+      "o square\nf 1/1/1 2/1/1 3//1 4\nv 2 0 0  # fifth\nf -1 2 3\n",
+      "mem.obj");
   ASSERT_EQ(mesh.vertices.size(), 5u);
   EXPECT_EQ(mesh.vertices[4].x, 2);
   ASSERT_EQ(mesh.triangles.size(), 3u);  // the quad as a fan of two, then one
@@ -43,8 +44,10 @@ TEST(RenderObj, ReadsVerticesAndFaces) {
 }
 
 TEST(RenderObj, ErrorsNameTheFileAndLine) {
-  EXPECT_NE(message_of([] { parse_obj("v 0 0 0\nv 1 0 0\nf 1 2 7\n", "a.obj"); }).find("a.obj, line 3"), std::string::npos);
-  EXPECT_NE(message_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 0 2\n", "a.obj"); }).find("line 4"), std::string::npos);
+  EXPECT_NE(message_of([] { parse_obj("v 0 0 0\nv 1 0 0\nf 1 2 7\n", "a.obj"); }).find("a.obj, line 3"),
+            std::string::npos);
+  EXPECT_NE(message_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 0 2\n", "a.obj"); }).find("line 4"),
+            std::string::npos);
   EXPECT_NE(message_of([] { parse_obj("v 0 zero 0\n", "a.obj"); }).find("line 1"), std::string::npos);
   EXPECT_NE(message_of([] { parse_obj("v 0 0 0\nbezier 1\n", "a.obj"); }).find("bezier"), std::string::npos);
   EXPECT_NE(message_of([] { parse_obj("v 0 0 0\nf 1 1\n", "a.obj"); }).find("at least 3"), std::string::npos);
@@ -56,9 +59,11 @@ TEST(RenderObj, SceneMeshesAreRelativeToTheSceneFile) {
   const auto dir = std::filesystem::temp_directory_path() / ("stratum-obj-" + std::to_string(hash64(17, ::getpid())));
   std::filesystem::create_directories(dir / "meshes");
   std::ofstream(dir / "meshes" / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-  const std::string scene_text = R"({"materials": {"m": {}}, "shapes": [{"type": "mesh", "file": "meshes/tri.obj", "material": "m"}]})";
+  const std::string scene_text =
+      R"({"materials": {"m": {}}, "shapes": [{"type": "mesh", "file": "meshes/tri.obj", "material": "m"}]})";
   std::ofstream(dir / "scene.json") << scene_text;
-  std::ofstream(dir / "missing.json") << R"({"materials": {"m": {}}, "shapes": [{"type": "mesh", "file": "no.obj", "material": "m"}]})";
+  std::ofstream(dir / "missing.json")
+      << R"({"materials": {"m": {}}, "shapes": [{"type": "mesh", "file": "no.obj", "material": "m"}]})";
   const Scene scene = load_scene((dir / "scene.json").string());
   ASSERT_EQ(scene.shapes.size(), 1u);
   EXPECT_EQ(scene.shapes[0].type, ShapeType::triangles);
@@ -70,8 +75,9 @@ TEST(RenderObj, SceneMeshesAreRelativeToTheSceneFile) {
 
 Scene disk_scene(double radius, double height, int segments) {
   return parse_scene(R"({"materials": {"lamp": {"reflectance": [0, 0, 0], "emission": [2, 2, 2]}},
-    "shapes": [{"type": "disk", "center": [0, )" + std::to_string(height) + R"(, 0], "normal": [0, -1, 0], "radius": )" +
-                         std::to_string(radius) + R"(, "segments": )" + std::to_string(segments) + R"(, "material": "lamp"}]})",
+    "shapes": [{"type": "disk", "center": [0, )" +
+                         std::to_string(height) + R"(, 0], "normal": [0, -1, 0], "radius": )" + std::to_string(radius) +
+                         R"(, "segments": )" + std::to_string(segments) + R"(, "material": "lamp"}]})",
                      "disk");
 }
 
@@ -81,11 +87,15 @@ TEST(RenderDisk, IsAnInscribedPolygonFacingItsNormal) {
   ASSERT_EQ(disk.indices.size(), 12u);
   EXPECT_NEAR(shape_area(disk), 0.5 * 12 * 1.5 * 1.5 * std::sin(2 * pi / 12), 1e-12);
   for (const auto& t : disk.indices) {
-    const Vec3 n = normalize(cross(disk.vertices[t[1]] - disk.vertices[t[0]], disk.vertices[t[2]] - disk.vertices[t[0]]));
+    const Vec3 n =
+        normalize(cross(disk.vertices[t[1]] - disk.vertices[t[0]], disk.vertices[t[2]] - disk.vertices[t[0]]));
     EXPECT_NEAR(n.y, -1, 1e-12);
   }
-  EXPECT_THROW(parse_scene(R"({"materials": {"m": {}}, "shapes": [{"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 0], "radius": 1, "material": "m"}]})", "d"),
-               invalid_argument);
+  EXPECT_THROW(
+      parse_scene(
+          R"({"materials": {"m": {}}, "shapes": [{"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 0], "radius": 1, "material": "m"}]})",
+          "d"),
+      invalid_argument);
 }
 
 TEST(RenderDisk, IrradianceOnTheAxisMatchesTheClosedForm) {
@@ -99,7 +109,8 @@ TEST(RenderDisk, IrradianceOnTheAxisMatchesTheClosedForm) {
   const int samples = 200000;
   double sum = 0, sum2 = 0;
   for (int i = 0; i < samples; ++i) {
-    const auto s = sample_light(scene, scene.lights[0], x, n, 0, {uniform01(4, i, 0), uniform01(4, i, 1)}, LightStrategy::area);
+    const auto s =
+        sample_light(scene, scene.lights[0], x, n, 0, {uniform01(4, i, 0), uniform01(4, i, 1)}, LightStrategy::area);
     const double v = s ? s->radiance.x * std::max(0.0, dot(n, s->wi)) / s->pdf : 0.0;
     sum += v, sum2 += v * v;
   }
@@ -119,11 +130,13 @@ TEST(RenderMotionBlur, MovingEdgeMatchesTheClosedFormCoverage) {
   const int width = 32;
   const double half_width = 4, tan_half = half_width / (z * width / 2.0);
   Scene scene = parse_scene(R"({
-    "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0], "fov": )" + std::to_string(2 * std::atan(tan_half) * 180 / pi) +
+    "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0], "fov": )" +
+                                std::to_string(2 * std::atan(tan_half) * 180 / pi) +
                                 R"(, "resolution": [32, 2]},
     "materials": {"strip": {"reflectance": [0, 0, 0], "emission": [1, 1, 1]}},
     "shapes": [{"type": "quad", "corner": [-1.5, -1, 0], "edge_u": [0, 2, 0], "edge_v": [1, 0, 0], "motion": [2, 0, 0], "material": "strip"}]
-  })", "strip");
+  })",
+                            "strip");
   RenderSettings s;
   s.sampler.sampler = "random";
   s.sampler.spp = 256;
@@ -148,7 +161,8 @@ TEST(RenderMotionBlur, MovingEdgeMatchesTheClosedFormCoverage) {
       const double se = std::sqrt(image.variance[p]);
       if (se > 0) {
         ++partial;
-        EXPECT_LT(std::abs(image.rgb[p] - expected), z_max * se) << "pixel " << i << ": " << image.rgb[p] << " vs " << expected;
+        EXPECT_LT(std::abs(image.rgb[p] - expected), z_max * se)
+            << "pixel " << i << ": " << image.rgb[p] << " vs " << expected;
       } else {
         EXPECT_NEAR(image.rgb[p], expected, 1e-9) << "pixel " << i;  // always or never covered
       }

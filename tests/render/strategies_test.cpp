@@ -39,7 +39,8 @@ Scene lit_scene() {
       {"type": "triangles", "vertices": [[-3.5, 2.5, 1], [-1.5, 2.5, 3], [-3.5, 1.8, 3]], "indices": [[0, 2, 1]], "material": "lamp"}
     ],
     "lights": [{"type": "environment", "radiance": [0.1, 0.1, 0.1]}]
-  })", "lit");
+  })",
+                     "lit");
 }
 
 RenderSettings settings(const std::string& integrator, const std::string& strategy, std::uint64_t seed) {
@@ -149,7 +150,8 @@ TEST(RenderStrategies, ProjectedSolidAngleReducesVarianceUnderAnObliqueLight) {
     "shapes": [
       {"type": "quad", "corner": [-5, 0, 5], "edge_u": [10, 0, 0], "edge_v": [0, 0, -10], "material": "floor"},
       {"type": "quad", "corner": [-2, 0.1, -2], "edge_u": [0, 3, 0], "edge_v": [0, 0, 4], "material": "lamp"}
-    ]})", "oblique");
+    ]})",
+                            "oblique");
   RenderSettings s = settings("direct", "solid-angle", 6);
   s.sampler.spp = 64;
   const Image solid = render(scene, s);

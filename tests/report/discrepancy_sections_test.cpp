@@ -52,7 +52,8 @@ TEST(DiscrepancySection, PictureBoxesAndValuesMatchTheExactSweep) {
   const auto& numbers = section.numbers;
   // The picture's sets, regenerated: their D* by the independent sweep.
   for (const auto& [label, sampler, randomize] :
-       {std::tuple<std::string, std::string, std::string>{"random", "random", ""}, {"hammersley:none", "hammersley", "none"}}) {
+       {std::tuple<std::string, std::string, std::string>{"random", "random", ""},
+        {"hammersley:none", "hammersley", "none"}}) {
     const PointSet points = points_of(sampler, randomize, 64, 1);
     const double star = analysis::star_discrepancy_2d({points.data.get(), 64, 2});
     EXPECT_NEAR(numbers["picture"][label]["star"].get<double>(), star, 1e-13) << label;
@@ -205,8 +206,7 @@ TEST(EdgeDiscrepancySection, GridPatternsAgainstTheDirectEnumerationAndTheBound)
     EXPECT_GE(value, 0.5 / n - 1e-12) << p["name"];  // no N-sample pattern beats 1/(2N)
     EXPECT_LE(p["axis_aligned"].get<double>(), value + 1e-12);
     const std::string name = p["name"];
-    if (name.find("the best N-rooks") != std::string::npos)
-      best[n] = value;
+    if (name.find("the best N-rooks") != std::string::npos) best[n] = value;
     else if (name.find("ordered") == std::string::npos)  // the other standard patterns are N-rooks too
       standard[n] = std::min(standard.count(n) ? standard[n] : INFINITY, value);
   }
@@ -218,8 +218,9 @@ TEST(EdgeDiscrepancySection, GridPatternsAgainstTheDirectEnumerationAndTheBound)
   // The ordered 2×2 grid has two rows, y = 2.5/8 and 5.5/8: the horizontal
   // edge through the upper row has all 4 samples on its closed side and area
   // 5.5/8 there, an error of 2.5/8 > 1/4.
-  const auto ordered = std::find_if(patterns.begin(), patterns.end(),
-                                    [](const nlohmann::json& p) { return p["name"].get<std::string>().find("ordered") != std::string::npos; });
+  const auto ordered = std::find_if(patterns.begin(), patterns.end(), [](const nlohmann::json& p) {
+    return p["name"].get<std::string>().find("ordered") != std::string::npos;
+  });
   ASSERT_NE(ordered, patterns.end());
   EXPECT_GT((*ordered)["axis_aligned"].get<double>(), 0.25);
   for (const auto& [id, cells] : section.numbers["lecture_patterns"].items())

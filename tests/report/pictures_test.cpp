@@ -78,8 +78,7 @@ TEST(ReportPictures, DifferencesAndTheGrid) {
   EXPECT_NEAR(shown.back(), 0, 1e-12);
 
   const std::vector<Crop> crops{{0, 0, 0.5, 0.5, "corner"}};
-  const nlohmann::json panels =
-      picture_grid({{&image, "base"}, {&brighter, "other"}}, crops, &image, "|difference|");
+  const nlohmann::json panels = picture_grid({{&image, "base"}, {&brighter, "other"}}, crops, &image, "|difference|");
   ASSERT_EQ(panels.size(), 6u);  // two renders, two crops, a blank and a heat map
   EXPECT_EQ(panels[0]["boxes"][0], nlohmann::json::array({0, 0, 2, 2}));
   EXPECT_EQ(panels[2]["width"], 2);
@@ -141,8 +140,9 @@ TEST(ReportPictures, DiskMapsDrawTheirStrataWhereTheMapsSendThem) {
   // middle lines U₁ = 1/2 and U₂ = 1/2 on the two diameters.
   for (const int line : {0, cells, cells + 1, 2 * cells + 1})
     for (std::size_t i = 0; i < concentric["lines"][line][0].size(); ++i)
-      EXPECT_NEAR(std::hypot(concentric["lines"][line][0][i].get<double>(), concentric["lines"][line][1][i].get<double>()), 1,
-                  rounding)
+      EXPECT_NEAR(
+          std::hypot(concentric["lines"][line][0][i].get<double>(), concentric["lines"][line][1][i].get<double>()), 1,
+          rounding)
           << line;
   const auto& vertical = concentric["lines"][cells / 2];
   const auto& horizontal = concentric["lines"][cells + 1 + cells / 2];

@@ -146,7 +146,8 @@ TEST(ReportRenderSections, VarianceSixteenShadowRaysCutTheMse) {
   ASSERT_EQ(penumbra["1 shadow ray"]["mse_per_seed"].size(), repeats);
   for (unsigned k = 0; k < repeats; ++k)
     EXPECT_GT(penumbra["1 shadow ray"]["mse_per_seed"][k].get<double>(),
-              4 * penumbra["16 shadow rays"]["mse_per_seed"][k].get<double>()) << k;
+              4 * penumbra["16 shadow rays"]["mse_per_seed"][k].get<double>())
+        << k;
   const auto& local = penumbra["16 shadow rays"]["mse_ratio"];
   EXPECT_LE(local["low"].get<double>(), local["estimate"].get<double>());
   EXPECT_GE(local["high"].get<double>(), local["estimate"].get<double>());
@@ -155,8 +156,10 @@ TEST(ReportRenderSections, VarianceSixteenShadowRaysCutTheMse) {
   // The sentences quote ratios with their intervals, and an efficiency only
   // as the table does.
   EXPECT_NE(section.text[1].find("95% CI"), std::string::npos) << section.text[1];
-  EXPECT_NE(section.text[2].find(sixteen["time_resolved"].get<bool>() ? "so its efficiency" : "within the timing noise"),
-            std::string::npos) << section.text[2];
+  EXPECT_NE(
+      section.text[2].find(sixteen["time_resolved"].get<bool>() ? "so its efficiency" : "within the timing noise"),
+      std::string::npos)
+      << section.text[2];
 }
 
 TEST(ReportRenderSections, ImportanceZeroVarianceAndClosedForms) {
@@ -199,14 +202,14 @@ TEST(ReportRenderSections, ImportanceZeroVarianceAndClosedForms) {
   ASSERT_EQ(wall["area"]["mse_per_seed"].size(), large["repeats"].get<std::size_t>());
   for (std::size_t k = 0; k < wall["area"]["mse_per_seed"].size(); ++k)
     EXPECT_GT(wall["area"]["mse_per_seed"][k].get<double>(),
-              3 * wall["projected solid angle"]["mse_per_seed"][k].get<double>()) << k;
+              3 * wall["projected solid angle"]["mse_per_seed"][k].get<double>())
+        << k;
   EXPECT_GT(large["rows"]["projected solid angle"]["mse_ratio"]["low"].get<double>(), 2);
   // Under the sky, cosine-weighted directions beat uniform ones.
   EXPECT_GT(section.numbers["hemisphere"]["rows"]["cosine"]["mse_ratio"]["low"].get<double>(), 2);
   // Every sentence that quotes an MSE or efficiency ratio of the renders
   // gives its interval; none quotes an efficiency the times do not resolve.
-  for (std::size_t t : {0, 1, 2, 3, 4})
-    EXPECT_NE(section.text[t].find("95% CI"), std::string::npos) << section.text[t];
+  for (std::size_t t : {0, 1, 2, 3, 4}) EXPECT_NE(section.text[t].find("95% CI"), std::string::npos) << section.text[t];
   // The directions drawn: E[cos θ] is 1/2 for uniform directions and 2/3 for
   // cosine-weighted ones; 256 jittered directions are within 5 i.i.d.
   // standard errors (sqrt(1/12/256) and sqrt(1/18/256); jittered sampling
@@ -253,8 +256,8 @@ TEST(ReportRenderSections, SpaceTimeTablesAndMotionBlur) {
   EXPECT_EQ(tables["Cook pattern"]["neighbour_separation"], 2);           // cook_separation(4)
   const auto& blur = section.numbers["motion_blur"];
   const int pixels = blur["time_dependent_pixels"].get<int>();
-  EXPECT_GT(pixels, 0);                // the sphere moves
-  EXPECT_LT(pixels, 32 * 32);          // the walls do not
+  EXPECT_GT(pixels, 0);        // the sphere moves
+  EXPECT_LT(pixels, 32 * 32);  // the walls do not
   const unsigned repeats = blur["repeats"].get<unsigned>();
   EXPECT_GE(repeats, 3u);
   for (const auto& [label, row] : blur["rows"].items()) {
@@ -267,16 +270,19 @@ TEST(ReportRenderSections, SpaceTimeTablesAndMotionBlur) {
     // The time-dependent pixels hold less error than the whole image's sum.
     for (unsigned k = 0; k < repeats; ++k)
       EXPECT_LE(row["time_dependent_mse_per_seed"][k].get<double>() * pixels,
-                row["mse_per_seed"][k].get<double>() * 32 * 32 * (1 + 1e-12)) << label;
+                row["mse_per_seed"][k].get<double>() * 32 * 32 * (1 + 1e-12))
+          << label;
   }
   // Elsewhere the renders agree: the whole-image sums of squared error differ
   // only by the time-dependent pixels' (same film, lens and light samples).
   const auto& rows = blur["rows"];
   for (unsigned k = 0; k < repeats; ++k) {
-    const double whole_gap = (rows["cook"]["mse_per_seed"][k].get<double>() -
-                              rows["random time"]["mse_per_seed"][k].get<double>()) * 32 * 32;
+    const double whole_gap =
+        (rows["cook"]["mse_per_seed"][k].get<double>() - rows["random time"]["mse_per_seed"][k].get<double>()) * 32 *
+        32;
     const double local_gap = (rows["cook"]["time_dependent_mse_per_seed"][k].get<double>() -
-                              rows["random time"]["time_dependent_mse_per_seed"][k].get<double>()) * pixels;
+                              rows["random time"]["time_dependent_mse_per_seed"][k].get<double>()) *
+                             pixels;
     EXPECT_NEAR(whole_gap, local_gap, 1e-9) << k;
   }
   // The close-up: the sphere fills the frame, so a far larger share of its

@@ -318,7 +318,8 @@ TEST(ReportSamplingSections, FourViewsAgreeWithWhiteNoiseAndClosedForms) {
   ASSERT_EQ(side * side, static_cast<int>(n));
   double one_d = 0;
   for (int i = 0; i < side; ++i) one_d += std::exp(-std::pow((i + 0.5) / side, 2)) / side;
-  EXPECT_NEAR(quadrature["midpoint"]["gaussian_error"].get<double>(), std::abs(one_d * one_d - gaussian_exact()), 1e-15);
+  EXPECT_NEAR(quadrature["midpoint"]["gaussian_error"].get<double>(), std::abs(one_d * one_d - gaussian_exact()),
+              1e-15);
   EXPECT_LT(quadrature["gauss_legendre"]["gaussian_error"].get<double>(), 1e-14);
   for (const auto& [name, entry] : patterns.items())
     EXPECT_LT(quadrature["gauss_legendre"]["gaussian_error"].get<double>(), entry["smooth_rmse"].get<double>()) << name;
@@ -339,8 +340,8 @@ TEST(ReportSamplingSections, FourViewsAgreeWithWhiteNoiseAndClosedForms) {
   }
   // Ranks: each column's best rank is 1 and the ranks stay within the pattern count.
   const std::size_t count = patterns.size();
-  for (const char* key : {"low_frequency_power", "effective_nyquist", "peak_power", "edge_variance", "star", "l2_star",
-                          "smooth_rmse"}) {
+  for (const char* key :
+       {"low_frequency_power", "effective_nyquist", "peak_power", "edge_variance", "star", "l2_star", "smooth_rmse"}) {
     int best = 1000;
     for (const auto& [name, entry] : patterns.items()) {
       const int rank = entry[std::string(key) + "_rank"].get<int>();

@@ -61,7 +61,7 @@ long double brute_force_coordinate(const Matrix& c, std::uint32_t b, std::uint64
 }
 
 TEST(Faure, BaseIsTheSmallestPrimeAtLeastS) {
-  const std::vector<std::pair<unsigned, std::uint32_t>> cases = {{1, 2}, {2, 2}, {3, 3}, {4, 5}, {5, 5},
+  const std::vector<std::pair<unsigned, std::uint32_t>> cases = {{1, 2}, {2, 2},  {3, 3},   {4, 5},      {5, 5},
                                                                  {6, 7}, {8, 11}, {14, 17}, {1024, 1031}};
   for (const auto& [s, b] : cases) {
     EXPECT_EQ(Faure::base_for(s), b) << s;
@@ -187,9 +187,10 @@ TEST(Faure, BlocksOfBToTheMPointsAreZeroMSNets) {
     const std::uint32_t b = faure.base();
     for (unsigned m = 0; m <= max_m; ++m)
       for (std::uint64_t block : {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{1} << 20}) {
-        expect_net(s, b, m, block * power(b, m),
-                   [&](std::uint64_t i, unsigned j, unsigned k) { return leading_digits(faure.digit_word(i, j), b, k); },
-                   "faure s " + std::to_string(s));
+        expect_net(
+            s, b, m, block * power(b, m),
+            [&](std::uint64_t i, unsigned j, unsigned k) { return leading_digits(faure.digit_word(i, j), b, k); },
+            "faure s " + std::to_string(s));
       }
   }
 }
@@ -207,15 +208,24 @@ TEST(Faure, RandomizedNetsStayNets) {
     for (unsigned m = 1; m <= max_m; ++m)
       for (std::uint64_t block : {std::uint64_t{0}, std::uint64_t{7}}) {
         const std::uint64_t first = block * power(b, m);
-        expect_net(s, b, m, first, [&](std::uint64_t i, unsigned j, unsigned k) {
-          return fraction_cell(owen.fraction(faure.digit_word(i, j), j), b, k);
-        }, "owen");
-        expect_net(s, b, m, first, [&](std::uint64_t i, unsigned j, unsigned k) {
-          return fraction_cell(shift.fraction(faure.digit_word(i, j), j), b, k);
-        }, "xor");
-        expect_net(s, b, m, first, [&](std::uint64_t i, unsigned j, unsigned k) {
-          return fraction_cell(permute.fraction(faure.digit_word(i, j), j), b, k);
-        }, "permute");
+        expect_net(
+            s, b, m, first,
+            [&](std::uint64_t i, unsigned j, unsigned k) {
+              return fraction_cell(owen.fraction(faure.digit_word(i, j), j), b, k);
+            },
+            "owen");
+        expect_net(
+            s, b, m, first,
+            [&](std::uint64_t i, unsigned j, unsigned k) {
+              return fraction_cell(shift.fraction(faure.digit_word(i, j), j), b, k);
+            },
+            "xor");
+        expect_net(
+            s, b, m, first,
+            [&](std::uint64_t i, unsigned j, unsigned k) {
+              return fraction_cell(permute.fraction(faure.digit_word(i, j), j), b, k);
+            },
+            "permute");
       }
   }
 }
@@ -238,7 +248,8 @@ TEST(FaureRegistry, IsTheHeadersSequenceUnderEachRandomizer) {
   const BaseBOwenScrambler owen(seed, bases);
   const BaseBDigitalShift shift(seed, bases);
   const RandomDigitPermutations permute(seed, bases);
-  const PointSet none = registry_points(n, d, "none", seed, start), by_owen = registry_points(n, d, "owen", seed, start);
+  const PointSet none = registry_points(n, d, "none", seed, start),
+                 by_owen = registry_points(n, d, "owen", seed, start);
   const PointSet by_shift = registry_points(n, d, "xor", seed, start);
   const PointSet by_permute = registry_points(n, d, "permute", seed, start);
   const PointSet by_default = registry_points(n, d, "", seed, start);

@@ -153,8 +153,8 @@ TEST(Kronecker, RejectsBadArguments) {
   EXPECT_THROW(Kronecker(Kronecker::max_dimensions + 1), invalid_argument);
   EXPECT_THROW(Kronecker(2u, 1.0), invalid_argument);
   EXPECT_THROW(Kronecker(2u, -0.1), invalid_argument);
-  for (const std::vector<double>& bad : std::vector<std::vector<double>>{
-           {}, {0.5, 0.0}, {1.0}, {-0.2}, {std::nan("")}, {0x1.0p-140}}) {
+  for (const std::vector<double>& bad :
+       std::vector<std::vector<double>>{{}, {0.5, 0.0}, {1.0}, {-0.2}, {std::nan("")}, {0x1.0p-140}}) {
     try {
       Kronecker sequence(bad);
       FAIL() << "accepted " << bad.size() << " entries";

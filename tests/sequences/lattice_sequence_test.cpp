@@ -130,11 +130,12 @@ TEST(LatticeSequenceRegistry, IsTheHeadersSequenceWithCranleyPatterson) {
 }
 
 TEST(LatticeSequenceRegistry, RejectsBadParameters) {
-  for (const auto& [d, value] : std::vector<std::pair<unsigned, std::string>>{
-           {2, "1"}, {2, "1,0"}, {2, "1,-3"}, {2, "1,x"}, {40, ""}}) {
+  for (const auto& [d, value] :
+       std::vector<std::pair<unsigned, std::string>>{{2, "1"}, {2, "1,0"}, {2, "1,-3"}, {2, "1,x"}, {40, ""}}) {
     try {
-      registry_points(4, d, "none", 0, value.empty() ? std::map<std::string, std::string>{}
-                                                     : std::map<std::string, std::string>{{"generator", value}});
+      registry_points(4, d, "none", 0,
+                      value.empty() ? std::map<std::string, std::string>{}
+                                    : std::map<std::string, std::string>{{"generator", value}});
       FAIL() << "d " << d << " generator=" << value;
     } catch (const invalid_argument& e) {
       EXPECT_TRUE(e.argument().rfind("generator", 0) == 0 || e.argument() == "d") << e.argument();

@@ -37,7 +37,7 @@ TEST(Rank1Lattice, MatchesFracOfIZOverNInLongDouble) {
   // n a power of two: every value is exact.
   const auto dyadic = make(8, {1, 3});
   EXPECT_EQ(dyadic.sample(5, 0), 0.625);
-  EXPECT_EQ(dyadic.sample(5, 1), 0.875);  // 15 / 8 mod 1
+  EXPECT_EQ(dyadic.sample(5, 1), 0.875);   // 15 / 8 mod 1
   EXPECT_EQ(dyadic.sample(13, 1), 0.875);  // indices wrap modulo n
 }
 
@@ -89,11 +89,12 @@ TEST(Fibonacci, GoldenGeneratorIsTheClassicOneForFibonacciN) {
   for (unsigned k = 3; k <= 60; ++k) {
     const std::uint64_t n = fibonacci_number(k);
     EXPECT_EQ(golden_generator(n), fibonacci_number(k - 1)) << k;
-    EXPECT_EQ(static_cast<std::uint64_t>(std::llround(static_cast<long double>(n) / phi)), fibonacci_number(k - 1)) << k;
+    EXPECT_EQ(static_cast<std::uint64_t>(std::llround(static_cast<long double>(n) / phi)), fibonacci_number(k - 1))
+        << k;
   }
   // Other n: nearest to n/φ among values coprime to n.
-  EXPECT_EQ(golden_generator(100), 61u);   // 61.80 -> 62 shares 2 with 100; 61 is prime
-  EXPECT_EQ(golden_generator(256), 159u);  // 158.2 -> 158 even; 159 odd
+  EXPECT_EQ(golden_generator(100), 61u);    // 61.80 -> 62 shares 2 with 100; 61 is prime
+  EXPECT_EQ(golden_generator(256), 159u);   // 158.2 -> 158 even; 159 odd
   EXPECT_EQ(golden_generator(1000), 619u);  // 618.03 -> 618 even; 619 is 0.97 away, 617 is 1.03
   for (std::uint64_t n = 2; n < 3000; ++n) ASSERT_EQ(std::gcd(golden_generator(n), n), 1u) << n;
 }

@@ -135,8 +135,8 @@ void expect_net(const Pmj02& pmj, unsigned dx, unsigned dy, std::uint64_t begin,
     for (std::uint64_t i = 0; i < n; ++i) {
       const std::uint64_t bx = a == 0 ? 0 : x[i] >> (64 - a);
       const std::uint64_t by = a == k ? 0 : y[i] >> (64 - (k - a));
-      ASSERT_EQ(hits[(by << a) | bx]++, 0) << "seed " << pmj.seed() << " dims " << dx << "," << dy << " begin "
-                                           << begin << " k=" << k << " a=" << a;
+      ASSERT_EQ(hits[(by << a) | bx]++, 0)
+          << "seed " << pmj.seed() << " dims " << dx << "," << dy << " begin " << begin << " k=" << k << " a=" << a;
     }
   }
 }

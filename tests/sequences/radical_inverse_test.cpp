@@ -36,8 +36,8 @@ TEST(RadicalInverse, BaseThreeExactFractions) {
 
 TEST(RadicalInverse, MatchesLongDoubleDigitSumInManyBases) {
   for (std::uint32_t base : {2u, 3u, 5u, 7u, 10u, 97u, 7919u, 8161u})
-    for (std::uint64_t index : {0ull, 1ull, 17ull, 123456789ull, (1ull << 32) + 5, (1ull << 40) + 12345,
-                                0xffffffffffffffffull})
+    for (std::uint64_t index :
+         {0ull, 1ull, 17ull, 123456789ull, (1ull << 32) + 5, (1ull << 40) + 12345, 0xffffffffffffffffull})
       EXPECT_NEAR(radical_inverse(base, index), static_cast<double>(reference_radical_inverse(base, index)), 4e-16)
           << "base " << base << " index " << index;
 }

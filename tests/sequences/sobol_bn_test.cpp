@@ -98,7 +98,8 @@ TEST(SobolBn, UnbiasedOverSeeds) {
 
 TEST(SobolBn, TheKeyFileRoundTripsAndBadFilesAreRefused) {
   stratum::BlueNoiseTable table{16, 4, 4, 3, 5, 99, std::vector<std::uint16_t>(16 * 16 * 2)};
-  for (std::size_t i = 0; i < 256; ++i) table.ranks[2 * i] = std::uint16_t(i), table.ranks[2 * i + 1] = std::uint16_t(255 - i);
+  for (std::size_t i = 0; i < 256; ++i)
+    table.ranks[2 * i] = std::uint16_t(i), table.ranks[2 * i + 1] = std::uint16_t(255 - i);
   const std::string bytes = stratum::serialize_blue_noise_table(table);
   EXPECT_EQ(bytes.size(), 36u + 2 * table.ranks.size());
   EXPECT_EQ(stratum::parse_blue_noise_table(bytes, "t"), table);

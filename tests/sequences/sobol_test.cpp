@@ -82,7 +82,8 @@ TEST(Sobol, TableRecordsAreJoeKuoShaped) {
   const auto last = sobol_joe_kuo::directions(21200);
   EXPECT_EQ(last.degree, 18u);
   EXPECT_EQ(last.polynomial, 524263u);  // 2^18 + 2 * 115799 + 1
-  const std::uint32_t m[18] = {1, 1, 7, 11, 15, 7, 37, 239, 337, 245, 1557, 3681, 7357, 9639, 27367, 26869, 114603, 86317};
+  const std::uint32_t m[18] = {1,   1,    7,    11,   15,   7,     37,    239,    337,
+                               245, 1557, 3681, 7357, 9639, 27367, 26869, 114603, 86317};
   for (unsigned k = 0; k < 18; ++k) EXPECT_EQ(last.m[k], m[k]) << k;
 }
 
@@ -396,9 +397,10 @@ TEST(SobolRegistry, BulkEqualsRandomAccessForEveryBlockLayout) {
         const PointSet shifted = registry_points("sobol", n, d, "xor", seed, start, 2, order);
         for (std::uint64_t i = 0; i < n; ++i)
           for (unsigned j = 0; j < d; ++j) {
-            ASSERT_EQ(hashed(i, j), sobol.sample(start + i, j, owen)) << "d " << d << " " << order << " start " << start
-                                                                         << " i " << i << " j " << j;
-            ASSERT_EQ(shifted(i, j), sobol.sample(start + i, j, shift)) << "d " << d << " start " << start << " i " << i;
+            ASSERT_EQ(hashed(i, j), sobol.sample(start + i, j, owen))
+                << "d " << d << " " << order << " start " << start << " i " << i << " j " << j;
+            ASSERT_EQ(shifted(i, j), sobol.sample(start + i, j, shift))
+                << "d " << d << " start " << start << " i " << i;
           }
       }
     }
@@ -429,12 +431,12 @@ TEST(SobolRegistry, BulkOutputIsPinned) {
     std::uint64_t digest;
   };
   const Pin pins[] = {
-      {"gray", "none", 0xfecd43438dcf0f85ull},       {"gray", "owen-hash", 0xc916d42d31417e5aull},
-      {"gray", "xor", 0xf6faa991535196feull},        {"gray", "lms", 0xa5f55a514451ab5full},
-      {"gray", "cp", 0xcf7e8d5598904035ull},         {"gray", "owen", 0x4b63b670836ecc10ull},
-      {"natural", "none", 0xf969eb418dcf0f85ull},    {"natural", "owen-hash", 0x814b9ff0724a86faull},
-      {"natural", "xor", 0x634d2a2fabdc5964ull},     {"natural", "lms", 0xd648e5e4d24e2134ull},
-      {"natural", "cp", 0x3095546369d86e95ull},      {"natural", "owen", 0xa2e47770a73e1604ull},
+      {"gray", "none", 0xfecd43438dcf0f85ull},    {"gray", "owen-hash", 0xc916d42d31417e5aull},
+      {"gray", "xor", 0xf6faa991535196feull},     {"gray", "lms", 0xa5f55a514451ab5full},
+      {"gray", "cp", 0xcf7e8d5598904035ull},      {"gray", "owen", 0x4b63b670836ecc10ull},
+      {"natural", "none", 0xf969eb418dcf0f85ull}, {"natural", "owen-hash", 0x814b9ff0724a86faull},
+      {"natural", "xor", 0x634d2a2fabdc5964ull},  {"natural", "lms", 0xd648e5e4d24e2134ull},
+      {"natural", "cp", 0x3095546369d86e95ull},   {"natural", "owen", 0xa2e47770a73e1604ull},
   };
   for (const Pin& pin : pins)
     for (unsigned threads : {1u, 2u}) {

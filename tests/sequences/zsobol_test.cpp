@@ -83,7 +83,8 @@ TEST(ZSobol, BlockDigitsComposeToThePixelDigits) {
       for (unsigned k : {0u, 1u, 4u, 9u})
         for (std::uint32_t p = 0; p < 3; ++p) {
           const auto pair = z.pair(p);
-          for (auto [x, y] : {std::pair{0u, 0u}, std::pair{resolution - 1, resolution / 2}, std::pair{resolution / 3, 0u}}) {
+          for (auto [x, y] :
+               {std::pair{0u, 0u}, std::pair{resolution - 1, resolution / 2}, std::pair{resolution / 3, 0u}}) {
             const std::uint64_t block = z.block_digits(x, y, pair, k);
             EXPECT_EQ(z.pixel_digits(x, y, pair, block, k), z.pixel_digits(x, y, pair))
                 << "resolution " << resolution << " spp " << spp << " k " << k;

@@ -15,8 +15,10 @@ std::int64_t edge_separation(const SlotTable& t, bool torus) {
   std::int64_t best = static_cast<std::int64_t>(m) * m;
   for (std::uint32_t r = 0; r < m; ++r)
     for (std::uint32_t c = 0; c < m; ++c) {
-      if (torus || c + 1 < m) best = std::min<std::int64_t>(best, std::llabs(std::int64_t{t(r, c)} - t(r, (c + 1) % m)));
-      if (torus || r + 1 < m) best = std::min<std::int64_t>(best, std::llabs(std::int64_t{t(r, c)} - t((r + 1) % m, c)));
+      if (torus || c + 1 < m)
+        best = std::min<std::int64_t>(best, std::llabs(std::int64_t{t(r, c)} - t(r, (c + 1) % m)));
+      if (torus || r + 1 < m)
+        best = std::min<std::int64_t>(best, std::llabs(std::int64_t{t(r, c)} - t((r + 1) % m, c)));
     }
   return best;
 }

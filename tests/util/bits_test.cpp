@@ -20,7 +20,8 @@ TEST(Bits, ReverseMatchesBitByBitLoop) {
   for (std::uint64_t k = 0; k < 1000; ++k) {
     const std::uint64_t v = hash64(k);
     ASSERT_EQ(reverse_bits64(v), naive_reverse<std::uint64_t>(v, 64));
-    ASSERT_EQ(reverse_bits32(static_cast<std::uint32_t>(v)), naive_reverse<std::uint32_t>(static_cast<std::uint32_t>(v), 32));
+    ASSERT_EQ(reverse_bits32(static_cast<std::uint32_t>(v)),
+              naive_reverse<std::uint32_t>(static_cast<std::uint32_t>(v), 32));
     ASSERT_EQ(reverse_bits64(reverse_bits64(v)), v);
   }
 }

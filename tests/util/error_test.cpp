@@ -22,13 +22,19 @@ TEST(Error, PrintableEscapesControlBytesAndInvalidUtf8) {
   EXPECT_EQ(printable("plain text"), "plain text");
   EXPECT_EQ(printable("a\tb\r\n"), "a\\tb\\r\\n");
   EXPECT_EQ(printable("\x01\x7f\xff\x80z"), "\\x01\\x7f\\xff\\x80z");
-  EXPECT_EQ(printable("caf\xc3\xa9 \xe2\x88\x9a \xf0\x9f\x98\x80"), "caf\xc3\xa9 \xe2\x88\x9a \xf0\x9f\x98\x80");  // kept
-  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");          // an overlong '/'
-  EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a surrogate
-  EXPECT_EQ(printable("\xe2\x82"), "\\xe2\\x82");          // cut short
+  EXPECT_EQ(printable("caf\xc3\xa9 \xe2\x88\x9a \xf0\x9f\x98\x80"),
+            "caf\xc3\xa9 \xe2\x88\x9a \xf0\x9f\x98\x80");            // kept
+  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");                    // an overlong '/'
+  EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");           // a surrogate
+  EXPECT_EQ(printable("\xe2\x82"), "\\xe2\\x82");                    // cut short
   EXPECT_EQ(printable("\xf4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80");  // above U+10FFFF
   // The value of every message goes through it.
-  EXPECT_STREQ(invalid_argument("input", "a\x01" "b", "why").what(), "invalid input = a\\x01b: why");
+  EXPECT_STREQ(invalid_argument("input",
+                                "a\x01"
+                                "b",
+                                "why")
+                   .what(),
+               "invalid input = a\\x01b: why");
 }
 
 TEST(Real, FloatConversionNeverReachesOne) {

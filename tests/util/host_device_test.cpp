@@ -52,8 +52,7 @@ TEST(HostDevice, SobolViewOfRelocatedTablesEqualsSobol) {
   expect_same_points(sobol, view, 40);
   const stratum::HashOwenScrambler owen(7);
   for (unsigned d = 0; d < 40; ++d)
-    for (std::uint64_t i : {0ull, 5ull, (1ull << 33) + 1})
-      EXPECT_EQ(sobol.sample(i, d, owen), view.sample(i, d, owen));
+    for (std::uint64_t i : {0ull, 5ull, (1ull << 33) + 1}) EXPECT_EQ(sobol.sample(i, d, owen), view.sample(i, d, owen));
 }
 
 TEST(HostDevice, DigitScramblerViewsOfRelocatedArraysEqualTheScramblers) {

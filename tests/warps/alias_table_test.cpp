@@ -140,9 +140,11 @@ std::string error_of(const WarpParams& params) {
 
 TEST(WarpAliasTable, BadInput) {
   const std::string negative = error_of({{"values", {1, -0.5}}});
-  EXPECT_NE(negative.find("invalid values[1] = -0.5: must be a finite real in [0, inf)"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("invalid values[1] = -0.5: must be a finite real in [0, inf)"), std::string::npos)
+      << negative;
   EXPECT_NE(error_of({{"values", {0, 0, 0}}}).find("invalid values = (all 3 values zero)"), std::string::npos);
-  EXPECT_NE(error_of({{"values", {}}}).find("invalid values = (0 values): must be 1 or more finite reals"), std::string::npos);
+  EXPECT_NE(error_of({{"values", {}}}).find("invalid values = (0 values): must be 1 or more finite reals"),
+            std::string::npos);
   EXPECT_NE(error_of({{"values", {1, NAN}}}).find("invalid values[1] = nan: must be a finite real"), std::string::npos);
   EXPECT_NE(error_of({}).find("invalid values = (missing)"), std::string::npos);
   const std::string core = [] {

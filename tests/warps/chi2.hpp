@@ -33,10 +33,9 @@
 // a fine subgrid of `subdivisions` × `subdivisions` panels per bin (not
 // adaptive: its cost is fixed and it does not stall on indicator-like densities;
 // its error is O(h⁶) for smooth densities and a fraction of one sub-panel along
-// a discontinuity; an open rule, so a jump on a bin edge costs nothing). Cells are sorted by expected count and those below
-// min_expected = 5 are pooled into one cell, as Mitsuba's ChiSquareTest does;
-// a cell with expected count 0 but observations makes the statistic infinite.
-// A density with a jump inside the bins (an indicator such as a disk or a
+// a discontinuity; an open rule, so a jump on a bin edge costs nothing). Cells are sorted by expected count and those
+// below min_expected = 5 are pooled into one cell, as Mitsuba's ChiSquareTest does; a cell with expected count 0 but
+// observations makes the statistic infinite. A density with a jump inside the bins (an indicator such as a disk or a
 // triangle binned on its bounding box) needs subdivisions = 32: at the default
 // 8 the rim cells' expected counts may be off by ~1.5%, which biases p low at
 // 2·10⁵ samples (measured with Simpson's rule, the concentric disk and a 16 × 16 box grid).
@@ -89,8 +88,12 @@ struct Domain {
   /// The point of the domain at bin coordinates (s, t).
   void point(double s, double t, double* p) const {
     switch (kind) {
-      case Kind::interval: p[0] = s; break;
-      case Kind::box: p[0] = s, p[1] = t; break;
+      case Kind::interval:
+        p[0] = s;
+        break;
+      case Kind::box:
+        p[0] = s, p[1] = t;
+        break;
       case Kind::disk: {
         const double r = std::sqrt(std::max(s, 0.0));
         p[0] = r * std::cos(t), p[1] = r * std::sin(t);
@@ -107,10 +110,18 @@ struct Domain {
   long bin_of(const double* p) const {
     double s = 0, t = 0;
     switch (kind) {
-      case Kind::interval: s = p[0], t = 0.5 * (t0 + t1); break;
-      case Kind::box: s = p[0], t = p[1]; break;
-      case Kind::disk: s = p[0] * p[0] + p[1] * p[1], t = angle(p[1], p[0]); break;
-      case Kind::directions: s = p[2], t = angle(p[1], p[0]); break;
+      case Kind::interval:
+        s = p[0], t = 0.5 * (t0 + t1);
+        break;
+      case Kind::box:
+        s = p[0], t = p[1];
+        break;
+      case Kind::disk:
+        s = p[0] * p[0] + p[1] * p[1], t = angle(p[1], p[0]);
+        break;
+      case Kind::directions:
+        s = p[2], t = angle(p[1], p[0]);
+        break;
     }
     if (!(s >= s0 && s <= s1 && t >= t0 && t <= t1)) return -1;
     const auto i = std::min<long>(s_bins - 1, static_cast<long>((s - s0) / (s1 - s0) * s_bins));
@@ -141,9 +152,7 @@ struct Chi2Result {
 };
 
 /// Šidák-corrected per-test level: 1 − (1 − family_alpha)^(1/tests).
-inline double sidak_alpha(double family_alpha, int tests) {
-  return 1.0 - std::pow(1.0 - family_alpha, 1.0 / tests);
-}
+inline double sidak_alpha(double family_alpha, int tests) { return 1.0 - std::pow(1.0 - family_alpha, 1.0 / tests); }
 
 /// The χ² family. Every gtest in a test suite whose name ends in "Chi2" is one
 /// χ² test of a correct sampler (TEST_P instantiations count each parameter:
@@ -205,8 +214,9 @@ inline void expect_chi2(const Chi2Result& result, const std::string& what = {}) 
   }
   ::testing::Test::RecordProperty(chi2_property, std::to_string(result.p_value));
   const int tests = chi2_tests_in_suite();
-  EXPECT_GT(result.p_value, chi2_alpha()) << what << (what.empty() ? "" : "\n") << "level: Šidák, family α = 0.01 over T = "
-                                          << tests << " χ² tests\n" << result.table;
+  EXPECT_GT(result.p_value, chi2_alpha())
+      << what << (what.empty() ? "" : "\n") << "level: Šidák, family α = 0.01 over T = " << tests << " χ² tests\n"
+      << result.table;
 }
 
 /// Fixture of a *Chi2 suite: a test that ends without its χ² check fails.
@@ -227,7 +237,8 @@ inline std::string chi2_param_name(std::string_view name) {
   std::string out;
   for (std::size_t i = 0; i < name.size(); ++i) {
     const unsigned char c = static_cast<unsigned char>(name[i]);
-    const bool starts_number = c == '-' && i + 1 < name.size() && std::isdigit(static_cast<unsigned char>(name[i + 1])) &&
+    const bool starts_number = c == '-' && i + 1 < name.size() &&
+                               std::isdigit(static_cast<unsigned char>(name[i + 1])) &&
                                (i == 0 || !std::isalnum(static_cast<unsigned char>(name[i - 1])));
     if (std::isalnum(c) && c < 128) {
       out += static_cast<char>(c);

@@ -23,8 +23,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct SourceCensus {
-  std::set<std::string> chi2_suites;  // suites named *Chi2 in TEST / TEST_F / TEST_P
-  int expect_chi2_calls = 0;          // call sites of testing::expect_chi2
+  std::set<std::string> chi2_suites;           // suites named *Chi2 in TEST / TEST_F / TEST_P
+  int expect_chi2_calls = 0;                   // call sites of testing::expect_chi2
   std::vector<std::string> direct_level_uses;  // files comparing against chi2_alpha() themselves
 };
 
@@ -43,7 +43,8 @@ SourceCensus census_of_test_sources() {
 #endif
     std::ifstream in(entry.path());
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    for (std::sregex_iterator m(text.begin(), text.end(), suite), end; m != end; ++m) census.chi2_suites.insert((*m)[2]);
+    for (std::sregex_iterator m(text.begin(), text.end(), suite), end; m != end; ++m)
+      census.chi2_suites.insert((*m)[2]);
     census.expect_chi2_calls +=
         static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), call), std::sregex_iterator()));
     if (entry.path().filename() != "chi2_family_test.cpp" && text.find("chi2_alpha()") != std::string::npos)
@@ -73,8 +74,8 @@ std::set<std::string> registered_chi2_suites() {
 TEST(WarpChi2Family, CountIsComputedFromTheRegisteredTests) {
   const int tests = testing::chi2_tests_in_suite();
   const double level = testing::chi2_alpha();
-  std::cout << "χ² family: T = " << tests << " tests in *Chi2 suites, family α = 0.01, per-test level (Šidák) "
-            << level << "\n";
+  std::cout << "χ² family: T = " << tests << " tests in *Chi2 suites, family α = 0.01, per-test level (Šidák) " << level
+            << "\n";
   ::testing::Test::RecordProperty("chi2_family_tests", tests);
   const SourceCensus census = census_of_test_sources();
   EXPECT_EQ(registered_chi2_suites(), census.chi2_suites);

@@ -23,8 +23,12 @@ struct Density1d {
 
 template <class D>
 Density1d wrap(std::string name, D d, double lo, double hi) {
-  return {std::move(name), [d](double u) { return d.sample(u); }, [d](double x) { return d.pdf(x); },
-          [d](double x) { return d.invert(x); }, lo, hi};
+  return {std::move(name),
+          [d](double u) { return d.sample(u); },
+          [d](double x) { return d.pdf(x); },
+          [d](double x) { return d.invert(x); },
+          lo,
+          hi};
 }
 
 std::vector<Density1d> densities() {
@@ -64,7 +68,10 @@ TEST_F(WarpBilinearDensityChi2, MatchesPdf) {
         const auto p = bilinear.sample({u[0], u[1]});
         out[0] = p[0], out[1] = p[1];
       },
-      [&](const double* p) { return bilinear.pdf({p[0], p[1]}); }, testing::Domain::box(0, 1, 0, 1, 16, 16)));
+      [&](const double* p) {
+        return bilinear.pdf({p[0], p[1]});
+      },
+      testing::Domain::box(0, 1, 0, 1, 16, 16)));
 }
 
 TEST(WarpDensities1d, InverseRoundTrip) {
@@ -125,8 +132,11 @@ TEST(WarpDensities1d, PdfIntegratesToOne) {
     EXPECT_NEAR(total, 1.0, 1e-12) << t.name;
   }
   const BilinearDensity<double> bilinear(std::array<double, 4>{1, 2, 0.5, 4});
-  const double total = testing::bin_mass([&](const double* p) { return bilinear.pdf({p[0], p[1]}); },
-                                         testing::Domain::box(0, 1, 0, 1, 1, 1), 0, 0, 4);
+  const double total = testing::bin_mass(
+      [&](const double* p) {
+        return bilinear.pdf({p[0], p[1]});
+      },
+      testing::Domain::box(0, 1, 0, 1, 1, 1), 0, 0, 4);
   EXPECT_NEAR(total, 1.0, 1e-14);  // Gauss–Legendre is exact for bilinear
 }
 
@@ -166,8 +176,14 @@ TEST(WarpDensities1d, BadParameters) {
   EXPECT_NE(error_of([] { NormalDensity<double>(0, -2); }).find("invalid sigma = -2"), std::string::npos);
   EXPECT_NE(error_of([] { LinearDensity<double>(-1, 2); }).find("invalid a = -1"), std::string::npos);
   EXPECT_NE(error_of([] { LinearDensity<double>(0, 0); }).find("not both be zero"), std::string::npos);
-  EXPECT_NE(error_of([] { BilinearDensity<double>(std::array<double, 4>{0, 0, 0, 0}); }).find("invalid weights"), std::string::npos);
-  EXPECT_NE(error_of([] { BilinearDensity<double>(std::array<double, 4>{1, -1, 0, 0}); }).find("invalid weights"), std::string::npos);
+  EXPECT_NE(error_of([] {
+              BilinearDensity<double>(std::array<double, 4>{0, 0, 0, 0});
+            }).find("invalid weights"),
+            std::string::npos);
+  EXPECT_NE(error_of([] {
+              BilinearDensity<double>(std::array<double, 4>{1, -1, 0, 0});
+            }).find("invalid weights"),
+            std::string::npos);
   EXPECT_EQ(error_of([] { BilinearDensity<double>(std::array<double, 4>{0, 0, 0, 1}); }), "");
 }
 

@@ -105,8 +105,7 @@ TEST(WarpDisk, PdfIntegratesToOne) {
   const int m = 2048;
   double sum = 0;
   for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i)
-      sum += uniform_disk_pdf<double>({-1 + (i + 0.5) * 2.0 / m, -1 + (j + 0.5) * 2.0 / m});
+    for (int i = 0; i < m; ++i) sum += uniform_disk_pdf<double>({-1 + (i + 0.5) * 2.0 / m, -1 + (j + 0.5) * 2.0 / m});
   EXPECT_NEAR(sum * 4.0 / (double(m) * m), 1.0, 1e-3);
 }
 

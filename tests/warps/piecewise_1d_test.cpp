@@ -130,7 +130,8 @@ TEST(WarpPiecewise1D, BadInput) {
   const std::string zero = error_of({{"values", {0, 0}}, {"width", {2}}});
   EXPECT_NE(zero.find("invalid values = (all 2 values zero): at least one value must be positive"), std::string::npos)
       << zero;
-  EXPECT_NE(error_of({{"values", {1, NAN}}, {"width", {2}}}).find("invalid values[1] = nan: must be a finite real"), std::string::npos);
+  EXPECT_NE(error_of({{"values", {1, NAN}}, {"width", {2}}}).find("invalid values[1] = nan: must be a finite real"),
+            std::string::npos);
   const std::string count = error_of({{"values", {1, 2, 3}}, {"width", {4}}});
   EXPECT_NE(count.find("invalid values = (3 values): must hold width = 4 values"), std::string::npos) << count;
   for (double bad : {0.0, -3.0, 2.5}) {
@@ -139,7 +140,8 @@ TEST(WarpPiecewise1D, BadInput) {
               std::string::npos)
         << width;
   }
-  EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {2, 2}}}).find("invalid width = (2 values): must be an integer"), std::string::npos);
+  EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {2, 2}}}).find("invalid width = (2 values): must be an integer"),
+            std::string::npos);
   EXPECT_NE(error_of({{"width", {2}}}).find("invalid values = (missing)"), std::string::npos);
   const std::string empty = [] {
     try {

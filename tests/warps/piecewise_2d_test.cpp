@@ -19,10 +19,10 @@ using A2 = std::array<double, 2>;
 // 4 rows of 5: an all-zero row, zero cells, and a bright "sun".
 constexpr std::size_t width = 5, height = 4;
 const std::vector<double> image = {
-    1, 2, 0, 0.5, 1,  //
-    0, 0, 0, 0,   0,  //
-    3, 9, 1, 0,   2,  //
-    0.25, 1, 4, 1, 0.5,
+    1,    2, 0, 0.5, 1,  //
+    0,    0, 0, 0,   0,  //
+    3,    9, 1, 0,   2,  //
+    0.25, 1, 4, 1,   0.5,
 };
 
 /// Brute force: the inverse of the CDF of a piecewise-constant density on
@@ -87,7 +87,10 @@ TEST_F(WarpPiecewise2DChi2, MatchesPdf) {
         const A2 p = table.sample({u[0], u[1]});
         out[0] = p[0], out[1] = p[1];
       },
-      [&](const double* p) { return table.pdf({p[0], p[1]}); }, testing::Domain::box(0, 1, 0, 1, 20, 16)));
+      [&](const double* p) {
+        return table.pdf({p[0], p[1]});
+      },
+      testing::Domain::box(0, 1, 0, 1, 20, 16)));
 }
 
 TEST(WarpPiecewise2D, InverseRoundTrip) {
@@ -131,25 +134,28 @@ std::string error_of(const WarpParams& params) {
 
 TEST(WarpPiecewise2D, BadInput) {
   const std::string count = error_of({{"values", {1, 2, 3, 4, 5}}, {"width", {2}}, {"height", {2}}});
-  EXPECT_NE(count.find("invalid values = (5 values): must hold width × height = 2 × 2 = 4 values"),
-            std::string::npos)
+  EXPECT_NE(count.find("invalid values = (5 values): must hold width × height = 2 × 2 = 4 values"), std::string::npos)
       << count;
   const std::string negative = error_of({{"values", {1, 2, 3, -4}}, {"width", {2}}, {"height", {2}}});
   EXPECT_NE(negative.find("invalid values[3] = -4: must be a finite real in [0, inf)"), std::string::npos) << negative;
   const std::string zero = error_of({{"values", {0, 0, 0, 0}}, {"width", {2}}, {"height", {2}}});
   EXPECT_NE(zero.find("invalid values = (all 4 values zero)"), std::string::npos) << zero;
-  EXPECT_NE(error_of({{"values", {1, 2, INFINITY, 4}}, {"width", {2}}, {"height", {2}}}).find("invalid values[2] = inf: must be a finite real"),
+  EXPECT_NE(error_of({{"values", {1, 2, INFINITY, 4}}, {"width", {2}}, {"height", {2}}})
+                .find("invalid values[2] = inf: must be a finite real"),
             std::string::npos);
-  EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {2}}, {"height", {0}}}).find("invalid height = 0: must be an integer in [1, 2^40]"),
+  EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {2}}, {"height", {0}}})
+                .find("invalid height = 0: must be an integer in [1, 2^40]"),
             std::string::npos);
-  EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {1.5}}, {"height", {1}}}).find("invalid width = 1.5: must be an integer in [1, 2^40]"),
+  EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {1.5}}, {"height", {1}}})
+                .find("invalid width = 1.5: must be an integer in [1, 2^40]"),
             std::string::npos);
   EXPECT_NE(error_of({{"values", {1, 2}}, {"width", {2}}}).find("invalid height = (missing)"), std::string::npos);
   EXPECT_EQ(error_of({{"values", {1, 2}}, {"width", {2}}, {"height", {1}}}), "");
 }
 
 TEST(WarpPiecewise2D, RegistryEntryMatchesTheCore) {
-  const auto warp = make_warp("piecewise-2d", {{"values", image}, {"width", {double(width)}}, {"height", {double(height)}}});
+  const auto warp =
+      make_warp("piecewise-2d", {{"values", image}, {"width", {double(width)}}, {"height", {double(height)}}});
   const PiecewiseConstant2D<double> table(image, width, height);
   const double u[4] = {0.1, 0.5, 0.95, 0.2};
   const auto p = warp_sample(*warp, u, 2);

@@ -27,7 +27,7 @@ struct Case {
   std::function<U2(V3)> invert;
   std::vector<V3> polygon;  // vertices in order, as seen from the origin
   V3 normal;
-  double z_min;  // all directions have z >= z_min
+  double z_min;                          // all directions have z >= z_min
   std::function<V3(U2)> uniform_sample;  // the spherical warp alone
   double solid_angle;
 };
@@ -36,8 +36,9 @@ const ProjectedSphericalTriangle<double> triangle(SphericalTriangle<double>({0.1
                                                   {0.6, 0, 0.8});
 const ProjectedSphericalRectangle<double> rectangle(SphericalRectangle<double>({-4, -3, 1}, {8, 0, 0}, {0, 7, 0}),
                                                     {0, 0, 1});
-const ProjectedSphericalRectangle<double> tilted(
-    SphericalRectangle<double>({-0.4, -0.3, 1}, {0.9, 0.3, 0}, {-0.2, 0.6, 0.15}), {0.3, -0.4, 0.8});
+const ProjectedSphericalRectangle<double> tilted(SphericalRectangle<double>({-0.4, -0.3, 1}, {0.9, 0.3, 0},
+                                                                            {-0.2, 0.6, 0.15}),
+                                                 {0.3, -0.4, 0.8});
 
 template <class Map>
 Case make_case(const char* name, const Map& map, std::vector<V3> polygon, V3 normal, double z_min) {
@@ -56,8 +57,8 @@ std::vector<Case> cases() {
   return {
       make_case("triangle", triangle, {{0.1, 0.05, 1}, {1, 0.2, 1}, {-0.1, 1, 1}}, {0.6, 0, 0.8}, 0.6),
       make_case("wide rectangle", rectangle, {{-4, -3, 1}, {4, -3, 1}, {4, 4, 1}, {-4, 4, 1}}, {0, 0, 1}, 0.1),
-      make_case("tilted rectangle", tilted,
-                {{-0.4, -0.3, 1}, {0.5, 0, 1}, {0.3, 0.6, 1.15}, {-0.6, 0.3, 1.15}}, {0.3, -0.4, 0.8}, 0.55),
+      make_case("tilted rectangle", tilted, {{-0.4, -0.3, 1}, {0.5, 0, 1}, {0.3, 0.6, 1.15}, {-0.6, 0.3, 1.15}},
+                {0.3, -0.4, 0.8}, 0.55),
   };
 }
 
@@ -179,13 +180,14 @@ TEST(WarpProjectedSolidAngle, CornerWeightsAreTheCosinesAtTheCorners) {
     EXPECT_NEAR(w.pdf(corner_u), 4 * testing::unit(corners[i])[2] / total, 1e-12) << i;
   }
   // Grazing corners are floored at 0.01 (pbrt-v4), so the density stays positive.
-  const ProjectedSphericalTriangle<double> grazing(SphericalTriangle<double>({1, 0, 0}, {0, 1, 0}, {0, 0, 1}), {1, 0, 0});
+  const ProjectedSphericalTriangle<double> grazing(SphericalTriangle<double>({1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
+                                                   {1, 0, 0});
   EXPECT_GT(grazing.pdf(testing::unit({0.001, 0.5, 0.5})), 0.0);
 }
 
 TEST(WarpProjectedSolidAngle, FloatAgreesWithDouble) {
-  const ProjectedSphericalRectangle<float> rectangle_float(
-      SphericalRectangle<float>({-4, -3, 1}, {8, 0, 0}, {0, 7, 0}), {0, 0, 1});
+  const ProjectedSphericalRectangle<float> rectangle_float(SphericalRectangle<float>({-4, -3, 1}, {8, 0, 0}, {0, 7, 0}),
+                                                           {0, 0, 1});
   for (std::uint64_t i = 0; i < 2000; ++i) {
     const U2 u = u_at(29, i);
     const V3 w = rectangle.sample(u);
@@ -208,13 +210,16 @@ TEST(WarpProjectedSolidAngle, BadInputAndRegistry) {
   for (const char* name : {"spherical-triangle-projected", "spherical-rectangle-projected"}) {
     const std::string zero = error_of(name, {{"normal", {0, 0, 0}}});
     EXPECT_NE(zero.find("invalid normal = (0, 0, 0): must be a non-zero vector"), std::string::npos) << zero;
-    EXPECT_NE(error_of(name, {{"normal", {0, 1}}}).find("invalid normal = (2 values): must be 3 finite reals"), std::string::npos);
+    EXPECT_NE(error_of(name, {{"normal", {0, 1}}}).find("invalid normal = (2 values): must be 3 finite reals"),
+              std::string::npos);
     EXPECT_FALSE(find_warp(name).area_preserving);
     EXPECT_EQ(error_of(name, {}), "");
   }
-  EXPECT_NE(error_of("spherical-triangle-projected", {{"vertices", {0, 0, 1, 1, 1, 1, 2, 2, 1}}}).find("invalid vertices"),
+  EXPECT_NE(
+      error_of("spherical-triangle-projected", {{"vertices", {0, 0, 1, 1, 1, 1, 2, 2, 1}}}).find("invalid vertices"),
+      std::string::npos);
+  EXPECT_NE(error_of("spherical-rectangle-projected", {{"origin", {0, 0, 1}}}).find("invalid origin"),
             std::string::npos);
-  EXPECT_NE(error_of("spherical-rectangle-projected", {{"origin", {0, 0, 1}}}).find("invalid origin"), std::string::npos);
   // The registry entry is the core map with the default normal (0, 0, 1).
   const auto warp = make_warp("spherical-rectangle-projected",
                               {{"corner", {-4, -3, 1}}, {"edge_u", {8, 0, 0}}, {"edge_v", {0, 7, 0}}});

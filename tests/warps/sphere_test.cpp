@@ -113,8 +113,11 @@ TEST(WarpSphere, InverseRoundTrip) {
 // integrands: 1e-9.
 TEST(WarpSphere, PdfIntegratesToOne) {
   for (const auto& t : triads()) {
-    const double total = testing::bin_mass([&](const double* p) { return t.pdf({p[0], p[1], p[2]}); },
-                                           testing::Domain::directions(t.z_min, 1, 1, 1), 0, 0, 200);
+    const double total = testing::bin_mass(
+        [&](const double* p) {
+          return t.pdf({p[0], p[1], p[2]});
+        },
+        testing::Domain::directions(t.z_min, 1, 1, 1), 0, 0, 200);
     EXPECT_NEAR(total, 1.0, 1e-9) << t.name;
   }
 }
@@ -147,8 +150,9 @@ TEST(WarpSphere, FloatAgreesWithDouble) {
     const std::array<std::array<float, 3>, 4> f = {sample_uniform_hemisphere<float>({u0, u1}),
                                                    sample_cosine_hemisphere<float>({u0, u1}),
                                                    sample_uniform_sphere<float>({u0, u1}), cone_f.sample({u0, u1})};
-    const std::array<A3, 4> d = {sample_uniform_hemisphere<double>({u0, u1}), sample_cosine_hemisphere<double>({u0, u1}),
-                                 sample_uniform_sphere<double>({u0, u1}), cone_d.sample({u0, u1})};
+    const std::array<A3, 4> d = {sample_uniform_hemisphere<double>({u0, u1}),
+                                 sample_cosine_hemisphere<double>({u0, u1}), sample_uniform_sphere<double>({u0, u1}),
+                                 cone_d.sample({u0, u1})};
     for (int m = 0; m < 4; ++m)
       for (int c = 0; c < 3; ++c) ASSERT_NEAR(f[m][c], d[m][c], 2e-3 * std::sqrt(1e-3) + 1e-5) << m << " " << k;
     ASSERT_NEAR(cosine_hemisphere_pdf<float>(f[1]), cosine_hemisphere_pdf<double>(d[1]), 1e-5);

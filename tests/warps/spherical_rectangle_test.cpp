@@ -110,10 +110,10 @@ TEST(WarpSphericalRectangle, Chi2RejectsUniformAreaSampling) {
   };
   testing::Chi2Options options;
   options.subdivisions = 24;
-  EXPECT_LT(testing::chi2_test(by_area, testing::direction_pdf(map), testing::Domain::directions(c.z_min, 1, 24, 48),
-                               options)
-                .p_value,
-            1e-12);
+  EXPECT_LT(
+      testing::chi2_test(by_area, testing::direction_pdf(map), testing::Domain::directions(c.z_min, 1, 24, 48), options)
+          .p_value,
+      1e-12);
 }
 
 TEST(WarpSphericalRectangle, SamplesAreUnitDirectionsInside) {
@@ -240,8 +240,7 @@ TEST(WarpSphericalRectangle, BadInput) {
   const std::string zero_v = error_of({{"edge_v", {0, 0, 0}}});
   EXPECT_NE(zero_v.find("invalid edge_v = (0, 0, 0)"), std::string::npos) << zero_v;
   const std::string parallel = error_of({{"edge_u", {1, 0, 0}}, {"edge_v", {-2, 0, 0}}});
-  EXPECT_NE(parallel.find("invalid edge_v = (-2, 0, 0): must not be parallel to edge_u = (1, 0, 0)"),
-            std::string::npos)
+  EXPECT_NE(parallel.find("invalid edge_v = (-2, 0, 0): must not be parallel to edge_u = (1, 0, 0)"), std::string::npos)
       << parallel;
   const std::string skew = error_of({{"edge_u", {1, 0, 0}}, {"edge_v", {1, 1, 0}}});
   EXPECT_NE(skew.find("must be perpendicular to edge_u"), std::string::npos) << skew;
@@ -251,8 +250,10 @@ TEST(WarpSphericalRectangle, BadInput) {
   const std::string inside_plane = error_of({{"origin", {0, 0, 1}}});
   EXPECT_NE(inside_plane.find("invalid origin = (0, 0, 1)"), std::string::npos) << inside_plane;
   const std::string short_corner = error_of({{"corner", {1, 2}}});
-  EXPECT_NE(short_corner.find("invalid corner = (2 values): must be 3 finite reals"), std::string::npos) << short_corner;
-  EXPECT_NE(error_of({{"corner", {1, INFINITY, 0}}}).find("invalid corner[1] = inf: must be a finite real"), std::string::npos);
+  EXPECT_NE(short_corner.find("invalid corner = (2 values): must be 3 finite reals"), std::string::npos)
+      << short_corner;
+  EXPECT_NE(error_of({{"corner", {1, INFINITY, 0}}}).find("invalid corner[1] = inf: must be a finite real"),
+            std::string::npos);
   EXPECT_EQ(error_of({}), "");
 }
 

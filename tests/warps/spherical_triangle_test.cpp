@@ -102,10 +102,10 @@ TEST(WarpSphericalTriangle, Chi2RejectsUniformAreaSampling) {
   };
   testing::Chi2Options options;
   options.subdivisions = 24;
-  EXPECT_LT(testing::chi2_test(by_area, testing::direction_pdf(map), testing::Domain::directions(c.z_min, 1, 24, 48),
-                               options)
-                .p_value,
-            1e-12);
+  EXPECT_LT(
+      testing::chi2_test(by_area, testing::direction_pdf(map), testing::Domain::directions(c.z_min, 1, 24, 48), options)
+          .p_value,
+      1e-12);
 }
 
 TEST(WarpSphericalTriangle, SamplesAreUnitDirectionsInside) {
@@ -239,22 +239,24 @@ TEST(WarpSphericalTriangle, BadInput) {
   const std::string shifted = error_of({{"vertices", {0, 0, 1, 1, 0, 1, 0, 1, 1}}, {"origin", {5, 5, 1}}});
   EXPECT_NE(shifted.find("invalid vertices"), std::string::npos) << shifted;
   const std::string at_origin = error_of({{"vertices", {0, 0, 0, 1, 0, 1, 0, 1, 1}}});
-  EXPECT_NE(at_origin.find("invalid vertices = (0, 0, 0): each vertex must differ from the origin"),
-            std::string::npos)
+  EXPECT_NE(at_origin.find("invalid vertices = (0, 0, 0): each vertex must differ from the origin"), std::string::npos)
       << at_origin;
   const std::string short_list = error_of({{"vertices", {0, 0, 1, 1, 0, 1}}});
   EXPECT_NE(short_list.find("invalid vertices = (6 values): must be 9 finite reals"), std::string::npos) << short_list;
   const std::string bad_origin = error_of({{"origin", {0, 0}}});
   EXPECT_NE(bad_origin.find("invalid origin = (2 values): must be 3 finite reals"), std::string::npos) << bad_origin;
-  EXPECT_NE(error_of({{"vertices", {0, 0, 1, 1, 0, 1, 0, NAN, 1}}}).find("invalid vertices[7] = nan: must be a finite real"), std::string::npos);
+  EXPECT_NE(
+      error_of({{"vertices", {0, 0, 1, 1, 0, 1, 0, NAN, 1}}}).find("invalid vertices[7] = nan: must be a finite real"),
+      std::string::npos);
   EXPECT_EQ(error_of({}), "");  // the defaults are a valid triangle
 }
 
 TEST(WarpSphericalTriangle, RegistryEntryMatchesTheCore) {
   const Case c = cases()[3];
-  const auto warp = make_warp("spherical-triangle", {{"vertices", {c.p0[0], c.p0[1], c.p0[2], c.p1[0], c.p1[1],
-                                                                   c.p1[2], c.p2[0], c.p2[1], c.p2[2]}},
-                                                     {"origin", {c.origin[0], c.origin[1], c.origin[2]}}});
+  const auto warp =
+      make_warp("spherical-triangle",
+                {{"vertices", {c.p0[0], c.p0[1], c.p0[2], c.p1[0], c.p1[1], c.p1[2], c.p2[0], c.p2[1], c.p2[2]}},
+                 {"origin", {c.origin[0], c.origin[1], c.origin[2]}}});
   const auto map = make(c);
   const double u[4] = {0.25, 0.75, 0.9, 0.1};
   const auto points = warp_sample(*warp, u, 2);

@@ -47,9 +47,7 @@ TEST_F(WarpTriangleChi2, Spatial) {
     const double rx = p[0] - v2[0], ry = p[1] - v2[1], det = a * d - b * c;
     out[0] = (rx * d - b * ry) / det, out[1] = (a * ry - c * rx) / det;
   };
-  const testing::PdfFn pdf = [](const double* b) {
-    return b[0] >= 0 && b[1] >= 0 && b[0] + b[1] <= 1 ? 2.0 : 0.0;
-  };
+  const testing::PdfFn pdf = [](const double* b) { return b[0] >= 0 && b[1] >= 0 && b[0] + b[1] <= 1 ? 2.0 : 0.0; };
   testing::Chi2Options options;
   options.subdivisions = 32;
   testing::expect_chi2(testing::chi2_test(sample, pdf, testing::Domain::box(0, 1, 0, 1, 14, 14), options));
@@ -62,7 +60,8 @@ TEST(WarpTriangle, ClosedForms) {
   EXPECT_EQ(planar.pdf({1.5, 1.1}), 0.0);
   // Spatial area: |e0 × e1| / 2 with e0 = (2, 0.5, −1.5), e1 = (1, 2.5, −3).
   const A3 e0 = {2, 0.5, -1.5}, e1 = {1, 2.5, -3};
-  const double cx = e0[1] * e1[2] - e0[2] * e1[1], cy = e0[2] * e1[0] - e0[0] * e1[2], cz = e0[0] * e1[1] - e0[1] * e1[0];
+  const double cx = e0[1] * e1[2] - e0[2] * e1[1], cy = e0[2] * e1[0] - e0[0] * e1[2],
+               cz = e0[0] * e1[1] - e0[1] * e1[0];
   EXPECT_NEAR(spatial.area(), std::sqrt(cx * cx + cy * cy + cz * cz) / 2, 1e-14);
   // Heitz's map sends the corners (0,0), (1,0), (1,1) to v2, v0, v1... u = (1, 0) → b = (1, 0) = v0.
   const A2 corner = planar.sample({1, 0});
@@ -151,7 +150,7 @@ TEST(WarpTriangle, DegenerateTriangleRejected) {
     return "";
   };
   EXPECT_NE(error_of({0, 0}, {1, 1}, {2, 2}).find("invalid vertices"), std::string::npos);  // collinear
-  EXPECT_NE(error_of({1, 1}, {1, 1}, {1, 1}).find("degenerate"), std::string::npos);         // one point
+  EXPECT_NE(error_of({1, 1}, {1, 1}, {1, 1}).find("degenerate"), std::string::npos);        // one point
   EXPECT_NE(error_of({0, 0}, {1, 0}, {NAN, 1}).find("finite"), std::string::npos);
   EXPECT_EQ(error_of({0, 0}, {1e-3, 0}, {0, 1e-3}), "");  // small is fine
 }

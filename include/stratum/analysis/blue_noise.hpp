@@ -40,7 +40,7 @@ namespace stratum::analysis {
 struct BlueNoiseOptions {
   std::uint32_t size = 128;       ///< tile side in pixels, a power of 2 in [16, 256]
   std::uint32_t dims = 8;         ///< coordinates (dims / 2 pairs, each optimized on its own), even, [2, 64]
-  std::uint64_t seed = 0;  ///< stratum::default_seed (the embedded tiles used --seed 1)
+  std::uint64_t seed = 0;         ///< stratum::default_seed (the embedded tiles used --seed 1)
   std::uint32_t max_spp = 16;     ///< the sample counts optimized for: 1, 2, 4, …, max_spp (a power of 2, ≤ 256)
   std::uint32_t integrands = 32;  ///< test integrands per sample count, [1, 1024]
   std::uint32_t sweeps = 256;     ///< swap proposals per pixel, [0, 100000]
@@ -58,6 +58,6 @@ void check_blue_noise_options(const BlueNoiseOptions& options);
 
 /// The optimized tile; `progress(pair, pairs)` is called before each pair.
 BlueNoiseTable optimize_blue_noise(const BlueNoiseOptions& options, std::vector<BlueNoisePairReport>* report = nullptr,
-                                  const std::function<void(std::uint32_t, std::uint32_t)>& progress = {});
+                                   const std::function<void(std::uint32_t, std::uint32_t)>& progress = {});
 
 }  // namespace stratum::analysis

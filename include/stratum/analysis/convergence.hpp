@@ -68,7 +68,7 @@ struct IntegrationResult {
   /// no error estimate and standard_error is NaN (never a false 0).
   std::string standard_error_kind;
   double exact = 0;
-  double error = 0;  ///< estimate − exact
+  double error = 0;    ///< estimate − exact
   double seconds = 0;  ///< wall time for all runs (generation + evaluation)
   std::vector<double> run_estimates;
   /// The confidence interval estimate ± t · standard_error at level

@@ -52,8 +52,7 @@ using PointFunction = std::function<double(const double* x, unsigned d)>;
 /// Σ over the tensor grid of `rule`^d of Π weights · f(node): N = m^d
 /// evaluations, in fixed blocks reduced in a fixed order (Neumaier sums), so
 /// the result does not depend on the thread count.
-double tensor_product_integral(const PointFunction& f, unsigned d, const QuadratureRule1D& rule,
-                               unsigned threads = 1);
+double tensor_product_integral(const PointFunction& f, unsigned d, const QuadratureRule1D& rule, unsigned threads = 1);
 
 /// A smooth test integrand on [0,1]^d with its exact integral and, where
 /// known, its exact variance under the uniform distribution (so the Monte
@@ -85,7 +84,7 @@ struct DimensionStudyRequest {
   unsigned runs = 16;              ///< independent MC (and RQMC) repetitions per (d, N)
   std::string rule = "midpoint";   ///< "midpoint" or "gauss"
   std::string integrand = "sine-product";
-  bool sobol = true;               ///< also Owen-scrambled (hash-based) Sobol' replicates
+  bool sobol = true;  ///< also Owen-scrambled (hash-based) Sobol' replicates
   std::uint64_t seed = 0;
   unsigned threads = 1;
 };
@@ -103,15 +102,15 @@ std::vector<unsigned> points_per_axis(const DimensionStudyRequest& request, unsi
 struct DimensionSeries {
   unsigned d = 0;
   double exact = 0;
-  double variance = -1;                  ///< exact Var f, < 0 when unknown
-  std::vector<unsigned> m;               ///< points per axis
-  std::vector<std::uint64_t> n;          ///< N = m^d
-  std::vector<double> product_error;     ///< |Q − I|
-  std::vector<double> mc_rmse;           ///< over `runs` independent MC estimates
-  std::vector<double> mc_predicted;      ///< σ/√N (NaN when σ unknown)
-  std::vector<double> sobol_rmse;        ///< empty unless request.sobol
-  double product_slope = 0;              ///< least-squares log-log slope (NaN if < 2 usable points)
-  double product_predicted_slope = 0;    ///< −r/d for the midpoint rule (r = 2); NaN for gauss
+  double variance = -1;                ///< exact Var f, < 0 when unknown
+  std::vector<unsigned> m;             ///< points per axis
+  std::vector<std::uint64_t> n;        ///< N = m^d
+  std::vector<double> product_error;   ///< |Q − I|
+  std::vector<double> mc_rmse;         ///< over `runs` independent MC estimates
+  std::vector<double> mc_predicted;    ///< σ/√N (NaN when σ unknown)
+  std::vector<double> sobol_rmse;      ///< empty unless request.sobol
+  double product_slope = 0;            ///< least-squares log-log slope (NaN if < 2 usable points)
+  double product_predicted_slope = 0;  ///< −r/d for the midpoint rule (r = 2); NaN for gauss
   double mc_slope = 0;
   double sobol_slope = 0;
 };

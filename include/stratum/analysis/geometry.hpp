@@ -13,7 +13,7 @@
 namespace stratum::analysis {
 
 struct MinimumDistance {
-  double distance = 0;        ///< smallest distance between two distinct points (indices)
+  double distance = 0;                ///< smallest distance between two distinct points (indices)
   std::size_t first = 0, second = 0;  ///< a closest pair, first < second
 };
 

@@ -68,39 +68,39 @@ double rectangle_area_integral(const RectangleLight& light, int cos_power, int l
 
 /// One method's measurements.
 struct MethodResult {
-  std::string method;               ///< "uniform", "cosine", "area", "solid-angle"
-  double estimate = 0;              ///< mean over all runs × samples
-  double estimate_stderr = 0;       ///< standard error of that mean (replicate spread / √runs)
-  double variance = 0;              ///< per-sample variance (mean of the replicates' sample variances)
-  double variance_stderr = 0;       ///< its standard error
-  double predicted_variance = 0;    ///< from the integrals above
-  double seconds_per_sample = 0;    ///< median replicate's wall time / samples
-  double efficiency = 0;            ///< 1 / (variance × seconds per sample); +inf when variance is 0
+  std::string method;             ///< "uniform", "cosine", "area", "solid-angle"
+  double estimate = 0;            ///< mean over all runs × samples
+  double estimate_stderr = 0;     ///< standard error of that mean (replicate spread / √runs)
+  double variance = 0;            ///< per-sample variance (mean of the replicates' sample variances)
+  double variance_stderr = 0;     ///< its standard error
+  double predicted_variance = 0;  ///< from the integrals above
+  double seconds_per_sample = 0;  ///< median replicate's wall time / samples
+  double efficiency = 0;          ///< 1 / (variance × seconds per sample); +inf when variance is 0
 };
 
 /// Method a against method b (ratios > 1 favour b).
 struct ImportanceComparison {
-  std::string scene;     ///< "sky" or "light"
-  std::string study;     ///< "hemisphere" (uniform vs cosine) or "light" (area vs solid-angle)
-  double size = 0;       ///< light side (0 for the sky)
-  double distance = 0;   ///< light height (0 for the sky)
-  double exact = 0;      ///< irradiance, closed form
+  std::string scene;    ///< "sky" or "light"
+  std::string study;    ///< "hemisphere" (uniform vs cosine) or "light" (area vs solid-angle)
+  double size = 0;      ///< light side (0 for the sky)
+  double distance = 0;  ///< light height (0 for the sky)
+  double exact = 0;     ///< irradiance, closed form
   MethodResult a, b;
   double variance_ratio = 0;         ///< a.variance / b.variance (+inf when b's is 0)
   double variance_ratio_stderr = 0;  ///< delta method from both standard errors
   double predicted_variance_ratio = 0;
-  double time_ratio = 0;             ///< a.seconds / b.seconds
-  double efficiency_ratio = 0;       ///< b.efficiency / a.efficiency
+  double time_ratio = 0;        ///< a.seconds / b.seconds
+  double efficiency_ratio = 0;  ///< b.efficiency / a.efficiency
 };
 
 struct ImportanceStudyRequest {
-  unsigned runs = 16;                    ///< independent replicates per method
-  std::uint64_t samples = 4096;          ///< samples per replicate
-  double radiance = 1;                   ///< L of the sky and of the lights
-  double hemisphere_light_size = 1;      ///< light of study (a)
+  unsigned runs = 16;                ///< independent replicates per method
+  std::uint64_t samples = 4096;      ///< samples per replicate
+  double radiance = 1;               ///< L of the sky and of the lights
+  double hemisphere_light_size = 1;  ///< light of study (a)
   double hemisphere_light_distance = 1;
-  std::vector<double> sizes{0.25, 1, 4};          ///< study (b): light sides
-  std::vector<double> distances{0.25, 1, 4};      ///< study (b): light heights
+  std::vector<double> sizes{0.25, 1, 4};      ///< study (b): light sides
+  std::vector<double> distances{0.25, 1, 4};  ///< study (b): light heights
   std::uint64_t seed = 0;
   unsigned threads = 1;
 };

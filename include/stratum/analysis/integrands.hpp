@@ -45,7 +45,7 @@ struct IntegrandInfo {
   unsigned max_dim = 1;
   unsigned default_dim = 2;
   std::vector<std::string> properties;  ///< "smooth", "discontinuous", "indicator", "kink", ...
-  std::vector<Param> params;  ///< numbers (reals or integers); every one has a default
+  std::vector<Param> params;            ///< numbers (reals or integers); every one has a default
   /// Builds the integrand for dimension d (already checked against
   /// [min_dim, max_dim]) and params (defaults filled in, names checked);
   /// throws stratum::invalid_argument naming a bad parameter value.

@@ -21,9 +21,9 @@
 namespace stratum::analysis {
 
 struct ToleranceRequest {
-  IntegrationRequest integration;  ///< its n is the first step's points per run
-  double abs_tol = 0;              ///< ≥ 0
-  double rel_tol = 0;              ///< in [0, 1); at least one of the two > 0
+  IntegrationRequest integration;                ///< its n is the first step's points per run
+  double abs_tol = 0;                            ///< ≥ 0
+  double rel_tol = 0;                            ///< in [0, 1); at least one of the two > 0
   std::uint64_t max_n = std::uint64_t{1} << 24;  ///< the most points per run a step may take
 };
 

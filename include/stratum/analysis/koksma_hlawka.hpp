@@ -33,10 +33,10 @@ namespace stratum::analysis {
 
 /// A 2D test function with its exact integral and Hardy–Krause variation.
 struct VariationTestFunction {
-  std::string name;     ///< "xy", "exp-sum", ...
-  std::string formula;  ///< as shown on the page
-  double integral = 0;  ///< ∫_{[0,1]²} f
-  double variation = 0;  ///< V_HK(f), anchored at 1
+  std::string name;        ///< "xy", "exp-sum", ...
+  std::string formula;     ///< as shown on the page
+  double integral = 0;     ///< ∫_{[0,1]²} f
+  double variation = 0;    ///< V_HK(f), anchored at 1
   std::string derivation;  ///< how V_HK was obtained, one line
   double (*f)(double x, double y) = nullptr;
 };

@@ -36,7 +36,7 @@ LocalDiscrepancyGrid local_discrepancy_grid(const PointView& points, std::size_t
 
 /// The box [0,x) × [0,y) of the supremum of |Δ|.
 struct StarDiscrepancyBox {
-  double value = 0;  ///< D*_N
+  double value = 0;     ///< D*_N
   double x = 0, y = 0;  ///< the box's upper corner
   /// true: the supremum is n_closed/N − x·y (too many points; the box's upper
   /// edges included, approached from above); false: x·y − n_open/N (too few).

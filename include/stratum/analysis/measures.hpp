@@ -44,7 +44,7 @@ struct MeasureInfo {
   std::string name;         ///< "star", "l2-star", "cd", "wd", "md", "edge", "edge-random", "t-value", ...
   std::string description;  ///< one line, with the definition's source
   std::size_t min_dim = 1;
-  std::size_t max_dim = 0;  ///< 0: no limit
+  std::size_t max_dim = 0;    ///< 0: no limit
   std::vector<Param> params;  ///< the schema of MeasureRequest::params
   /// Checks params and dimension-specific limits (e.g. an exact method's
   /// largest d), throwing stratum::invalid_argument that says which method can.

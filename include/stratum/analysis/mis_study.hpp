@@ -42,19 +42,19 @@ struct MisStudyRequest {
 void validate(const MisStudyRequest& request);
 
 struct MisMethodResult {
-  std::string method;             ///< "light", "bsdf", "balance", "power"
-  double estimate = 0;            ///< mean over the runs
-  double estimate_stderr = 0;     ///< replicate spread / √runs
-  double variance = 0;            ///< per-sample variance, mean over the runs
+  std::string method;          ///< "light", "bsdf", "balance", "power"
+  double estimate = 0;         ///< mean over the runs
+  double estimate_stderr = 0;  ///< replicate spread / √runs
+  double variance = 0;         ///< per-sample variance, mean over the runs
   double variance_stderr = 0;
   double predicted_variance = 0;  ///< from the integrals
 };
 
 struct MisCase {
-  double exponent = 0, angle = 0;  ///< e, α in degrees
-  double exact = 0;                ///< 1 − cos^(e+1) α
+  double exponent = 0, angle = 0;        ///< e, α in degrees
+  double exact = 0;                      ///< 1 − cos^(e+1) α
   std::vector<MisMethodResult> methods;  ///< light, bsdf, balance, power
-  std::string best_single;         ///< "light" or "bsdf": the lower predicted variance
+  std::string best_single;               ///< "light" or "bsdf": the lower predicted variance
   /// Predicted variance of each heuristic / that of the better single
   /// strategy (+inf when that is 0).
   double balance_over_best = 0, power_over_best = 0;

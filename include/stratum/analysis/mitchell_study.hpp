@@ -28,8 +28,8 @@ namespace stratum::analysis {
 
 /// One pattern: the registry sampler behind it.
 struct MitchellPattern {
-  std::string label;    ///< as in Mitchell's table: "Zaremba", "jittered", ...
-  std::string sampler;  ///< registry name
+  std::string label;                          ///< as in Mitchell's table: "Zaremba", "jittered", ...
+  std::string sampler;                        ///< registry name
   std::map<std::string, std::string> params;  ///< sampler parameters
   std::string randomize;                      ///< registry randomizer; empty: the sampler's default
 };
@@ -63,8 +63,8 @@ struct MeanAndError {
 struct MitchellCell {
   std::string pattern;  ///< mitchell_pattern_id (the sampler name for Mitchell's five)
   std::size_t requested = 0;
-  std::size_t n = 0;           ///< points actually used
-  MeanAndError rms, mean, max;  ///< of the random-edge RMS, mean and max per realization
+  std::size_t n = 0;               ///< points actually used
+  MeanAndError rms, mean, max;     ///< of the random-edge RMS, mean and max per realization
   std::vector<double> rms_values;  ///< per realization
 };
 
@@ -79,9 +79,9 @@ struct MitchellSpectrum {
 struct MitchellStudy {
   MitchellStudyOptions options;
   std::vector<MitchellPattern> patterns;  ///< mitchell_patterns(), then the extras, in this order
-  std::vector<MitchellCell> cells;  ///< pattern-major (order of `patterns`), then counts in the given order
+  std::vector<MitchellCell> cells;        ///< pattern-major (order of `patterns`), then counts in the given order
   std::vector<MitchellSpectrum> spectra;  ///< one per pattern, order of `patterns`
-  std::vector<std::string> notes;  ///< substitutions made (count changes)
+  std::vector<std::string> notes;         ///< substitutions made (count changes)
   const MitchellCell& cell(const std::string& pattern, std::size_t requested) const;
 };
 

@@ -12,7 +12,7 @@ namespace stratum::analysis {
 
 /// A positive ratio with its confidence interval from paired repeats.
 struct RatioInterval {
-  double estimate = 0;  ///< exp(mean of log(a_k / b_k)): the geometric mean of the ratios
+  double estimate = 0;       ///< exp(mean of log(a_k / b_k)): the geometric mean of the ratios
   double low = 0, high = 0;  ///< exp(mean ± t·s/√K); equal to the estimate for K = 1
   unsigned count = 0;        ///< K pairs
   double confidence = 0.95;

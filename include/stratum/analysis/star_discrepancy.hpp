@@ -94,7 +94,6 @@ struct StarDiscrepancyBounds {
 /// invalid_argument naming delta when the partition would need more than
 /// max_boxes boxes. Deterministic for any thread count.
 StarDiscrepancyBounds star_discrepancy_bounds(const PointView& points, double delta,
-                                              std::uint64_t max_boxes = std::uint64_t{1} << 26,
-                                              unsigned threads = 1);
+                                              std::uint64_t max_boxes = std::uint64_t{1} << 26, unsigned threads = 1);
 
 }  // namespace stratum::analysis

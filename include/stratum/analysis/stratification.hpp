@@ -41,9 +41,9 @@ NetQuality net_t_value_reference(const PointView& points, std::uint64_t base);
 /// quality measure for sample distributions"; McKay, Beckman, Conover 1979).
 struct LatinCheck {
   bool latin = false;
-  std::size_t worst_count = 0;  ///< largest number of points in one stratum (1 if Latin)
-  std::size_t worst_axis = 0;   ///< the axis where it occurs
-  std::size_t empty_strata = 0; ///< strata with no point, over all axes
+  std::size_t worst_count = 0;   ///< largest number of points in one stratum (1 if Latin)
+  std::size_t worst_axis = 0;    ///< the axis where it occurs
+  std::size_t empty_strata = 0;  ///< strata with no point, over all axes
 };
 LatinCheck latin_check(const PointView& points);
 

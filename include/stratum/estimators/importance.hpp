@@ -19,9 +19,7 @@ namespace stratum::estimators {
 /// reports 0 outside its domain). p ≤ 0 with f ≠ 0 cannot come from sampling
 /// p, so the caller's contract is broken; the result is then +inf or NaN,
 /// which the batch functions below reject up front.
-constexpr double importance_weighted(double f_value, double pdf) noexcept {
-  return f_value == 0 ? 0.0 : f_value / pdf;
-}
+constexpr double importance_weighted(double f_value, double pdf) noexcept { return f_value == 0 ? 0.0 : f_value / pdf; }
 
 /// Accumulates f(X_i)/p(X_i); estimate() is the mean, standard_error() its
 /// standard error. add() is noexcept: the per-sample path.

@@ -79,10 +79,18 @@ class BestCandidate {
   void generate(std::uint64_t n, Real* out) const {
     require(n >= 1 && n <= max_points, "n", n, "best-candidate takes 1 to 2^31 points");
     switch (dimensions_) {
-      case 1: Engine<1>(*this, n).run(out); break;
-      case 2: Engine<2>(*this, n).run(out); break;
-      case 3: Engine<3>(*this, n).run(out); break;
-      default: Engine<4>(*this, n).run(out); break;
+      case 1:
+        Engine<1>(*this, n).run(out);
+        break;
+      case 2:
+        Engine<2>(*this, n).run(out);
+        break;
+      case 3:
+        Engine<3>(*this, n).run(out);
+        break;
+      default:
+        Engine<4>(*this, n).run(out);
+        break;
     }
   }
 
@@ -96,10 +104,18 @@ class BestCandidate {
   static void candidate(std::uint64_t seed, unsigned d, std::uint64_t round, std::uint64_t index, double* x) noexcept {
     const std::uint64_t key = round_key(seed, round);
     switch (d) {
-      case 1: coordinates<1>(key, index, x); break;
-      case 2: coordinates<2>(key, index, x); break;
-      case 3: coordinates<3>(key, index, x); break;
-      default: coordinates<4>(key, index, x); break;
+      case 1:
+        coordinates<1>(key, index, x);
+        break;
+      case 2:
+        coordinates<2>(key, index, x);
+        break;
+      case 3:
+        coordinates<3>(key, index, x);
+        break;
+      default:
+        coordinates<4>(key, index, x);
+        break;
     }
   }
   static double low_bits(std::uint64_t seed, std::uint64_t round, unsigned j) noexcept {
@@ -131,9 +147,13 @@ class BestCandidate {
   class Engine {
    public:
     Engine(const BestCandidate& owner, std::uint64_t n)
-        : owner_(owner), n_(n), periodic_(owner.periodic_),
-          bound_cells_(static_cast<std::int64_t>(std::ceil(std::pow(cells_per_point * static_cast<double>(n), 1.0 / D)))),
-          search_(D, static_cast<std::uint64_t>(std::max(1.0, std::floor(std::pow(static_cast<double>(n) / 2, 1.0 / D)))),
+        : owner_(owner),
+          n_(n),
+          periodic_(owner.periodic_),
+          bound_cells_(
+              static_cast<std::int64_t>(std::ceil(std::pow(cells_per_point * static_cast<double>(n), 1.0 / D)))),
+          search_(D,
+                  static_cast<std::uint64_t>(std::max(1.0, std::floor(std::pow(static_cast<double>(n) / 2, 1.0 / D)))),
                   owner.periodic_) {
       std::int64_t total = 1;
       for (unsigned j = 0; j < D; ++j) total *= bound_cells_;
@@ -173,7 +193,8 @@ class BestCandidate {
       const double side = 1.0 / static_cast<double>(bound_cells_);
       const std::int64_t cells = bound_cells_;
       const double scaled = reach_ * static_cast<double>(cells);
-      const std::int64_t reach = scaled < static_cast<double>(cells) ? static_cast<std::int64_t>(std::ceil(scaled)) + 1 : cells;
+      const std::int64_t reach =
+          scaled < static_cast<double>(cells) ? static_cast<std::int64_t>(std::ceil(scaled)) + 1 : cells;
       std::int64_t first[D], last[D], c[D];
       for (unsigned j = 0; j < D; ++j) {
         const std::int64_t centre = bound_axis(p[j]);
@@ -198,7 +219,8 @@ class BestCandidate {
         float& bound = bound_[static_cast<std::size_t>(index)];
         if (far < bound) {
           float rounded = static_cast<float>(far);
-          if (static_cast<double>(rounded) < far) rounded = std::nextafter(rounded, std::numeric_limits<float>::infinity());
+          if (static_cast<double>(rounded) < far)
+            rounded = std::nextafter(rounded, std::numeric_limits<float>::infinity());
           bound = std::min(bound, rounded);
         }
         unsigned j = 0;
@@ -244,7 +266,8 @@ class BestCandidate {
       // The winner's 32-bit coordinates, completed with 21 random low bits
       // (never changing its 32-bit cell, so it stays in [0, 1)).
       coordinates<D>(key, best_index, x);
-      for (unsigned j = 0; j < D; ++j) winner[j] = std::min(x[j] + low_bits(owner_.seed_, i, j), one_minus_epsilon_double);
+      for (unsigned j = 0; j < D; ++j)
+        winner[j] = std::min(x[j] + low_bits(owner_.seed_, i, j), one_minus_epsilon_double);
     }
 
     // Cells of the bound grid per final point: finer cells make tighter

@@ -15,7 +15,8 @@ namespace stratum {
 
 class Jittered {
  public:
-  Jittered(StrataShape shape, std::uint64_t seed) : shape_(std::move(shape)), key_(hash64(seed, 0x4a49545445524544ULL)) {}
+  Jittered(StrataShape shape, std::uint64_t seed)
+      : shape_(std::move(shape)), key_(hash64(seed, 0x4a49545445524544ULL)) {}
 
   const StrataShape& shape() const noexcept { return shape_; }
   std::uint64_t count() const noexcept { return shape_.count(); }

@@ -146,8 +146,9 @@ class CorrelatedMultiJittered {
             "correlated multi-jittered takes 1 <= n <= 2^32 - 1 (32-bit hash permutations)");
     require(std::isfinite(aspect) && aspect > 0, "aspect", aspect, "must be a positive number");
     // m = ⌊√(n a)⌋, exact for a = 1 (the memo's sqrtf rounds for large n).
-    std::uint64_t m = aspect == 1.0 ? integer_root(count, 2)
-                                    : static_cast<std::uint64_t>(std::floor(std::sqrt(static_cast<double>(count) * aspect)));
+    std::uint64_t m = aspect == 1.0
+                          ? integer_root(count, 2)
+                          : static_cast<std::uint64_t>(std::floor(std::sqrt(static_cast<double>(count) * aspect)));
     columns_ = std::clamp<std::uint64_t>(m, 1, count);
     rows_ = (count + columns_ - 1) / columns_;
   }

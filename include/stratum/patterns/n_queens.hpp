@@ -135,8 +135,7 @@ class NQueens {
 
   template <class Real = double>
   Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return cell_coordinate<Real>(cell(index, dim), uniform01<double>(hash64(seed_, 0x514a4954ULL), index, dim),
-                                 count_);
+    return cell_coordinate<Real>(cell(index, dim), uniform01<double>(hash64(seed_, 0x514a4954ULL), index, dim), count_);
   }
 
   /// Hoffman–Loessi–Moore column of row r (0-based) for n ≥ 4 (or n = 1).
@@ -162,12 +161,8 @@ class NQueens {
 
     std::uint64_t down_of(std::uint64_t r) const noexcept { return r + (n - 1) - q[r]; }
     std::uint64_t up_of(std::uint64_t r) const noexcept { return r + q[r]; }
-    void add(std::uint64_t r) noexcept {
-      collisions += (down[down_of(r)]++ != 0) + (up[up_of(r)]++ != 0);
-    }
-    void remove(std::uint64_t r) noexcept {
-      collisions -= (--down[down_of(r)] != 0) + (--up[up_of(r)] != 0);
-    }
+    void add(std::uint64_t r) noexcept { collisions += (down[down_of(r)]++ != 0) + (up[up_of(r)]++ != 0); }
+    void remove(std::uint64_t r) noexcept { collisions -= (--down[down_of(r)] != 0) + (--up[up_of(r)] != 0); }
     bool attacked(std::uint64_t r) const noexcept { return down[down_of(r)] > 1 || up[up_of(r)] > 1; }
     void swap_columns(std::uint64_t i, std::uint64_t j) noexcept {
       remove(i);

@@ -32,7 +32,8 @@ class NeighborGrid {
   /// cells_per_axis^dimensions cells in all, each allocated).
   NeighborGrid(unsigned dimensions, std::uint64_t cells_per_axis, bool periodic)
       : dimensions_(dimensions), cells_per_axis_(cells_per_axis), periodic_(periodic) {
-    require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions, "NeighborGrid supports 1 to 8 dimensions");
+    require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
+            "NeighborGrid supports 1 to 8 dimensions");
     require(cells_per_axis >= 1, "cells_per_axis", cells_per_axis, "must be at least 1");
     std::uint64_t cells = 1;
     for (unsigned j = 0; j < dimensions; ++j) {
@@ -203,8 +204,7 @@ class NeighborGrid {
       const double sum = partial + cells.gap2[k];
       if (sum >= radius2 && sum > 0) continue;
       const std::uint64_t cell = prefix * cells_per_axis_ + cells.cell[k];
-      if (axis == 0 ? !visit_cell(cell, visit) : !visit_listed(axes, axis - 1, cell, sum, radius2, visit))
-        return false;
+      if (axis == 0 ? !visit_cell(cell, visit) : !visit_listed(axes, axis - 1, cell, sum, radius2, visit)) return false;
     }
     return true;
   }

@@ -89,10 +89,14 @@ class PoissonDisk {
   /// Bytes of the background grid for (d, r): cells of side ≤ r/√d, padded.
   static double grid_bytes(unsigned dimensions, double radius) noexcept {
     switch (dimensions) {
-      case 1: return poisson_detail::CompactPoissonDisk<1>::grid_bytes(radius);
-      case 2: return poisson_detail::CompactPoissonDisk<2>::grid_bytes(radius);
-      case 3: return poisson_detail::CompactPoissonDisk<3>::grid_bytes(radius);
-      default: return poisson_detail::CompactPoissonDisk<4>::grid_bytes(radius);
+      case 1:
+        return poisson_detail::CompactPoissonDisk<1>::grid_bytes(radius);
+      case 2:
+        return poisson_detail::CompactPoissonDisk<2>::grid_bytes(radius);
+      case 3:
+        return poisson_detail::CompactPoissonDisk<3>::grid_bytes(radius);
+      default:
+        return poisson_detail::CompactPoissonDisk<4>::grid_bytes(radius);
     }
   }
 
@@ -163,8 +167,8 @@ class PoissonDisk {
     std::vector<double> points = generate_maximal();
     const std::uint64_t found = points.size() / dimensions_;
     require(n >= 1 && n <= found, "n", n,
-            "a maximal Poisson-disk set with radius " + to_message_string(radius_) + " in d = " +
-                std::to_string(dimensions_) + " has " + std::to_string(found) + " points for seed " +
+            "a maximal Poisson-disk set with radius " + to_message_string(radius_) +
+                " in d = " + std::to_string(dimensions_) + " has " + std::to_string(found) + " points for seed " +
                 std::to_string(seed_) + "; ask for at most that many or give a smaller radius");
     return convert<Real>(thin(points, n, dimensions_, periodic_));
   }
@@ -210,16 +214,21 @@ class PoissonDisk {
     const std::vector<std::uint32_t> kept = eliminate_samples(points.data(), count, d, n, periodic);
     std::vector<double> out;
     out.reserve(kept.size() * d);
-    for (std::uint32_t i : kept) out.insert(out.end(), points.begin() + std::ptrdiff_t(i) * d, points.begin() + std::ptrdiff_t(i + 1) * d);
+    for (std::uint32_t i : kept)
+      out.insert(out.end(), points.begin() + std::ptrdiff_t(i) * d, points.begin() + std::ptrdiff_t(i + 1) * d);
     return out;
   }
 
   std::vector<double> generate_maximal() const {
     switch (dimensions_) {
-      case 1: return poisson_detail::CompactPoissonDisk<1>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
-      case 2: return poisson_detail::CompactPoissonDisk<2>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
-      case 3: return poisson_detail::CompactPoissonDisk<3>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
-      default: return poisson_detail::CompactPoissonDisk<4>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
+      case 1:
+        return poisson_detail::CompactPoissonDisk<1>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
+      case 2:
+        return poisson_detail::CompactPoissonDisk<2>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
+      case 3:
+        return poisson_detail::CompactPoissonDisk<3>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
+      default:
+        return poisson_detail::CompactPoissonDisk<4>(radius_, seed_, candidates_, periodic_, max_refinement).generate();
     }
   }
 

@@ -16,7 +16,8 @@ namespace stratum::poisson_detail {
 /// {p, q} is a corner or such a crossing, since the distance to p is convex
 /// on the part of the box on p's side of the bisector.
 template <unsigned D>
-[[gnu::always_inline]] inline bool pair_covers(const double* lo, double side, const double* p, const double* q, double r2) noexcept {
+[[gnu::always_inline]] inline bool pair_covers(const double* lo, double side, const double* p, const double* q,
+                                               double r2) noexcept {
   // Corners.
   for (unsigned corner = 0; corner < (1u << D); ++corner) {
     double dp = 0, dq = 0;

@@ -86,9 +86,17 @@ class CompactPoissonDisk {
 
   CompactPoissonDisk(double radius, std::uint64_t seed, unsigned candidates, bool periodic, unsigned max_refinement,
                      BridsonKernel kernel = BridsonKernel::fastest)
-      : r_(radius), r2_(radius * radius), seed_(seed), candidates_(candidates), periodic_(periodic),
-        max_refinement_(max_refinement), kernel_(kernel), g_(static_cast<std::int64_t>(cells_per_axis(radius))),
-        pad_(padding(radius)), side_(g_ + 2 * pad_), a_(1.0 / static_cast<double>(g_)) {
+      : r_(radius),
+        r2_(radius * radius),
+        seed_(seed),
+        candidates_(candidates),
+        periodic_(periodic),
+        max_refinement_(max_refinement),
+        kernel_(kernel),
+        g_(static_cast<std::int64_t>(cells_per_axis(radius))),
+        pad_(padding(radius)),
+        side_(g_ + 2 * pad_),
+        a_(1.0 / static_cast<double>(g_)) {
     std::int64_t stride = 1;
     for (unsigned j = 0; j < D; ++j, stride *= side_) stride_[j] = stride;
     cells_.assign(static_cast<std::size_t>(stride) * D, sentinel);
@@ -128,7 +136,6 @@ class CompactPoissonDisk {
     far2_.resize(stencil_.size());
     sides_.resize(max_refinement + 1);
     for (unsigned level = 0; level <= max_refinement; ++level) sides_[level] = std::ldexp(a_, -static_cast<int>(level));
-
   }
 
   /// The maximal set, row-major, Bridson's samples first.
@@ -383,7 +390,8 @@ class CompactPoissonDisk {
         double hit[D];
         if (!is_free(wrapped, cell_index(c), hit)) {
           // Remember the rejecter, as its image nearest to the unwrapped x.
-          for (unsigned j = 0; j < D; ++j) blockers_[j * capacity + next_recent] = nearest_image(hit[j], x[j], wrapped[j]);
+          for (unsigned j = 0; j < D; ++j)
+            blockers_[j * capacity + next_recent] = nearest_image(hit[j], x[j], wrapped[j]);
           if (next_recent == count) {
             ++count;
             for (unsigned j = 0; j < D; ++j) blockers_[j * capacity + count] = std::numeric_limits<double>::quiet_NaN();
@@ -423,19 +431,19 @@ class CompactPoissonDisk {
   std::vector<std::int64_t> stencil_;
   std::vector<double> points_;
   static constexpr std::size_t recent = 8;  // blockers remembered from rejections
-  std::vector<std::int64_t> block_;        // offsets of the cells around a parent
-  std::vector<double> blockers_;           // a step's blockers, one row per axis
-  std::vector<float> shadows_;             // grow_plane's blockers, offsets from p, one row per axis
-  CellOccupancy occupancy_;                // in the plane: which cells hold a sample
+  std::vector<std::int64_t> block_;         // offsets of the cells around a parent
+  std::vector<double> blockers_;            // a step's blockers, one row per axis
+  std::vector<float> shadows_;              // grow_plane's blockers, offsets from p, one row per axis
+  CellOccupancy occupancy_;                 // in the plane: which cells hold a sample
   std::size_t shadow_capacity_ = 0;
-  CellPattern block_pattern_;              // in the plane: grow_plane's block
-  CellPattern stencil_pattern_;            // in the plane: stencil_ as a pattern
-  std::uint64_t neighbour_bits_ = 0;       // its nearest 3×3 cells
+  CellPattern block_pattern_;         // in the plane: grow_plane's block
+  CellPattern stencil_pattern_;       // in the plane: stencil_ as a pattern
+  std::uint64_t neighbour_bits_ = 0;  // its nearest 3×3 cells
   std::size_t blocker_capacity_ = 0;
   std::vector<double> local_;  // samples of the current cell's stencil, one row per axis
   std::size_t local_size_ = 0;
   mutable std::vector<double> far2_;  // scratch: farthest-corner distances
-  std::vector<double> sides_;  // box side at each refinement level
+  std::vector<double> sides_;         // box side at each refinement level
 };
 
 }  // namespace stratum::poisson_detail

@@ -98,13 +98,13 @@ class StrataShape {
     if (checked_power(root, d) != n) {
       const std::uint64_t below = *checked_power(root, d);
       const auto above = checked_power(root + 1, d);
-      throw invalid_argument("n", to_message_string(n),
-                             "equal strata in d = " + std::to_string(d) + " need n = k^d (nearest: " +
-                                 std::to_string(below) + " = " + std::to_string(root) + "^" + std::to_string(d) +
-                                 (above ? ", " + std::to_string(*above) + " = " + std::to_string(root + 1) + "^" +
-                                              std::to_string(d)
-                                        : std::string()) +
-                                 "); or give strata=n1x...xnd with product n");
+      throw invalid_argument(
+          "n", to_message_string(n),
+          "equal strata in d = " + std::to_string(d) + " need n = k^d (nearest: " + std::to_string(below) + " = " +
+              std::to_string(root) + "^" + std::to_string(d) +
+              (above ? ", " + std::to_string(*above) + " = " + std::to_string(root + 1) + "^" + std::to_string(d)
+                     : std::string()) +
+              "); or give strata=n1x...xnd with product n");
     }
     return StrataShape(std::vector<std::uint64_t>(d, root));
   }

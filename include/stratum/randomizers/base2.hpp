@@ -61,18 +61,25 @@ STRATUM_HOST_DEVICE constexpr std::uint64_t keyed_word(std::uint64_t mixed_key, 
 
 /// The identity: the unscrambled construction.
 struct NoRandomizer {
-  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned /*dim*/) const noexcept { return bits; }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned /*dim*/) const noexcept {
+    return bits;
+  }
 };
 
 /// Digital shift in base 2: x ⊕ s_dim with s_dim uniform on 64-bit words.
 class DigitalShift {
  public:
-  STRATUM_HOST_DEVICE explicit constexpr DigitalShift(std::uint64_t seed) noexcept : base_(hash64(seed, 0x786f72ULL /* "xor" */)) {}
+  STRATUM_HOST_DEVICE explicit constexpr DigitalShift(std::uint64_t seed) noexcept
+      : base_(hash64(seed, 0x786f72ULL /* "xor" */)) {}
 
   /// The word XORed into dimension dim.
-  STRATUM_HOST_DEVICE constexpr std::uint64_t shift(unsigned dim) const noexcept { return base2_detail::dimension_key(base_, dim); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t shift(unsigned dim) const noexcept {
+    return base2_detail::dimension_key(base_, dim);
+  }
 
-  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return bits ^ shift(dim); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept {
+    return bits ^ shift(dim);
+  }
 
  private:
   std::uint64_t base_;
@@ -105,19 +112,24 @@ class LinearMatrixScramble {
       return y;
     }
     STRATUM_HOST_DEVICE constexpr std::uint64_t shift() const noexcept { return shift_; }
-    STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept { return linear(bits) ^ shift_; }
+    STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits) const noexcept {
+      return linear(bits) ^ shift_;
+    }
 
    private:
     std::uint64_t mixed_;
     std::uint64_t shift_;
   };
 
-  STRATUM_HOST_DEVICE explicit constexpr LinearMatrixScramble(std::uint64_t seed) noexcept : base_(hash64(seed, 0x6c6d73ULL /* "lms" */)) {}
+  STRATUM_HOST_DEVICE explicit constexpr LinearMatrixScramble(std::uint64_t seed) noexcept
+      : base_(hash64(seed, 0x6c6d73ULL /* "lms" */)) {}
 
   STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return Dimension(base2_detail::dimension_key(base_, dim));
   }
-  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept {
+    return dimension(dim)(bits);
+  }
 
  private:
   std::uint64_t base_;
@@ -134,7 +146,8 @@ class OwenScrambler {
  public:
   class Dimension {
    public:
-    STRATUM_HOST_DEVICE explicit constexpr Dimension(std::uint64_t key) noexcept : mixed_(mix64(key + 0x9e3779b97f4a7c15ULL)) {}
+    STRATUM_HOST_DEVICE explicit constexpr Dimension(std::uint64_t key) noexcept
+        : mixed_(mix64(key + 0x9e3779b97f4a7c15ULL)) {}
 
     /// The random flip of the node at `depth` (0 = root: the first digit)
     /// whose higher digits are `prefix` (depth bits).
@@ -154,12 +167,15 @@ class OwenScrambler {
     std::uint64_t mixed_;
   };
 
-  STRATUM_HOST_DEVICE explicit constexpr OwenScrambler(std::uint64_t seed) noexcept : base_(hash64(seed, 0x6f77656eULL /* "owen" */)) {}
+  STRATUM_HOST_DEVICE explicit constexpr OwenScrambler(std::uint64_t seed) noexcept
+      : base_(hash64(seed, 0x6f77656eULL /* "owen" */)) {}
 
   STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return Dimension(base2_detail::dimension_key(base_, dim));
   }
-  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept {
+    return dimension(dim)(bits);
+  }
 
  private:
   std::uint64_t base_;
@@ -213,7 +229,7 @@ class HashOwenScrambler {
   /// The steps on a bit-reversed word r with a dimension's addend and
   /// (odd) multiplier: the whole hash, in one place.
   STRATUM_HOST_DEVICE static constexpr std::uint64_t scramble_reversed(std::uint64_t r, std::uint64_t addend,
-                                                   std::uint64_t multiplier) noexcept {
+                                                                       std::uint64_t multiplier) noexcept {
     r ^= r * k1;
     r += addend;
     r *= multiplier;
@@ -233,12 +249,14 @@ class HashOwenScrambler {
   STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return dim < cached_dimensions ? cache_[dim] : Dimension(base2_detail::dimension_key(base_, dim));
   }
-  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept { return dimension(dim)(bits); }
+  STRATUM_HOST_DEVICE constexpr std::uint64_t operator()(std::uint64_t bits, unsigned dim) const noexcept {
+    return dimension(dim)(bits);
+  }
 
  private:
   template <std::size_t... dims>
-  STRATUM_HOST_DEVICE static constexpr std::array<Dimension, sizeof...(dims)> bind_first(std::uint64_t base,
-                                                                     std::index_sequence<dims...>) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::array<Dimension, sizeof...(dims)> bind_first(
+      std::uint64_t base, std::index_sequence<dims...>) noexcept {
     return {Dimension(base2_detail::dimension_key(base, static_cast<unsigned>(dims)))...};
   }
 

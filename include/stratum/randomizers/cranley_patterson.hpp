@@ -18,7 +18,9 @@ class CranleyPattersonRotation {
   STRATUM_HOST_DEVICE explicit constexpr CranleyPattersonRotation(std::uint64_t seed) noexcept : seed_(seed) {}
 
   /// The shift of dimension dim: uniform in [0, 1), a function of (seed, dim).
-  STRATUM_HOST_DEVICE constexpr double shift(unsigned dim) const noexcept { return uniform01<double>(hash64(seed_, 0x43505f524f54ULL), dim); }
+  STRATUM_HOST_DEVICE constexpr double shift(unsigned dim) const noexcept {
+    return uniform01<double>(hash64(seed_, 0x43505f524f54ULL), dim);
+  }
 
   /// (value + shift(dim)) mod 1, kept inside [0, 1).
   template <class Real = double>

@@ -35,7 +35,8 @@ class ShuffledPermutationRule {
   STRATUM_HOST_DEVICE explicit constexpr ShuffledPermutationRule(std::uint64_t seed) noexcept
       : key_(hash64(seed, 0x7065726d757465ULL /* "permute" */)) {}
 
-  STRATUM_HOST_DEVICE constexpr std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base, std::uint32_t digit) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base,
+                                                    std::uint32_t digit) const noexcept {
     // Trace the digit's final position back through swaps 1, 2, …, b−1.
     const std::uint64_t key = hash64_extend(dimension_key(dim), position);
     std::uint32_t at = digit;

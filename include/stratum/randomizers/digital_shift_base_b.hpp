@@ -27,10 +27,12 @@ class DigitShiftRule {
       : key_(hash64(seed, 0x736869667462ULL /* "shiftb" */)) {}
 
   /// s_j of (dim, position), uniform on {0..b−1}.
-  STRATUM_HOST_DEVICE constexpr std::uint32_t shift(unsigned dim, unsigned position, std::uint32_t base) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint32_t shift(unsigned dim, unsigned position,
+                                                    std::uint32_t base) const noexcept {
     return static_cast<std::uint32_t>(uniform_below(base, key_, dim, position));
   }
-  STRATUM_HOST_DEVICE constexpr std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base, std::uint32_t digit) const noexcept {
+  STRATUM_HOST_DEVICE constexpr std::uint32_t image(unsigned dim, unsigned position, std::uint32_t base,
+                                                    std::uint32_t digit) const noexcept {
     const std::uint32_t sum = digit + shift(dim, position, base);
     return sum >= base ? sum - base : sum;
   }

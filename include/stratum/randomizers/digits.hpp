@@ -280,7 +280,6 @@ class PositionalDigitScrambler {
   }
 
  private:
-
   void add_dimension(unsigned dim, std::uint32_t base) {
     Dimension d{};
     d.base = base;

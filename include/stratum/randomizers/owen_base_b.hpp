@@ -82,7 +82,8 @@ class BaseBOwenScrambler {
   /// π_{position, prefix}(digit) of dimension dim, where prefix = index mod
   /// b^position codes the index's digits below `position` (for tests and
   /// oracles).
-  std::uint32_t permute_digit(unsigned dim, unsigned position, std::uint64_t prefix, std::uint32_t digit) const noexcept {
+  std::uint32_t permute_digit(unsigned dim, unsigned position, std::uint64_t prefix,
+                              std::uint32_t digit) const noexcept {
     const Dimension& d = dims_[dim];
     return node_image(d, node_word(keys_[d.first + position], prefix), digit);
   }
@@ -102,7 +103,8 @@ class BaseBOwenScrambler {
   /// The per-sample path: the scrambler's arrays by pointer.
   class View {
    public:
-    STRATUM_HOST_DEVICE View(const Dimension* dims, const std::uint64_t* keys, const digits_detail::u128* weights) noexcept
+    STRATUM_HOST_DEVICE View(const Dimension* dims, const std::uint64_t* keys,
+                             const digits_detail::u128* weights) noexcept
         : dims_(dims), keys_(keys), weights_(weights) {}
 
     /// The scrambled radical inverse of `index` as a 64-bit binary fraction.
@@ -153,7 +155,6 @@ class BaseBOwenScrambler {
   }
 
  private:
-
   STRATUM_HOST_DEVICE static constexpr bool is_prime(std::uint32_t n) noexcept {
     for (std::uint32_t f = 2; f * f <= n; ++f)
       if (n % f == 0) return false;
@@ -166,7 +167,8 @@ class BaseBOwenScrambler {
   }
 
   // Image of `digit` under the permutation of the node whose word is w.
-  STRATUM_HOST_DEVICE static std::uint32_t node_image(const Dimension& d, std::uint64_t w, std::uint32_t digit) noexcept {
+  STRATUM_HOST_DEVICE static std::uint32_t node_image(const Dimension& d, std::uint64_t w,
+                                                      std::uint32_t digit) noexcept {
     const std::uint32_t b = d.base;
     if (b == 2) return digit ^ static_cast<std::uint32_t>(w >> 63);
     if (b <= 24) {
@@ -207,7 +209,8 @@ class BaseBOwenScrambler {
       x = (x * 0x2c1b3c6du) & mask;
       x ^= x >> ((bits + 2) / 3);
     } while (x >= b);
-    const std::uint64_t m = d.prime ? 1 + static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w) * (b - 1)) >> 64) : 1;
+    const std::uint64_t m =
+        d.prime ? 1 + static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w) * (b - 1)) >> 64) : 1;
     const std::uint64_t s = static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w2) * b) >> 64);
     return static_cast<std::uint32_t>((m * x + s) % b);
   }

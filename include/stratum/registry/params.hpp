@@ -43,7 +43,9 @@ struct Range {
     const auto lo = static_cast<long double>(min), hi = static_cast<long double>(max);
     return (min_open ? v > lo : v >= lo) && (max_open ? v < hi : v <= hi);
   }
-  bool bounded() const { return min != -std::numeric_limits<double>::infinity() || max != std::numeric_limits<double>::infinity(); }
+  bool bounded() const {
+    return min != -std::numeric_limits<double>::infinity() || max != std::numeric_limits<double>::infinity();
+  }
 };
 constexpr Range closed(double min, double max) { return {min, max, false, false}; }
 constexpr Range half_open(double min, double max) { return {min, max, false, true}; }  ///< [min, max)
@@ -69,15 +71,15 @@ struct Param {
   Range range{};                       ///< integer, real, and every element of integers/reals
   std::vector<std::string> choices{};  ///< choice
   Length length{};                     ///< integers, reals
-  char separator = ',';              ///< integers, reals
+  char separator = ',';                ///< integers, reals
 };
 
 /// Short constructors, so a registry entry reads as its schema.
 namespace params {
 Param integer(std::string name, std::string description, std::string default_value, Range range);
 Param real(std::string name, std::string description, std::string default_value, Range range);
-Param integers(std::string name, std::string description, std::string default_value, Range range,
-               Length length = {}, char separator = ',');
+Param integers(std::string name, std::string description, std::string default_value, Range range, Length length = {},
+               char separator = ',');
 Param reals(std::string name, std::string description, std::string default_value, Range range, Length length = {});
 Param choice(std::string name, std::string description, std::string default_value, std::vector<std::string> choices);
 Param flag(std::string name, std::string description, std::string default_value);
@@ -117,9 +119,9 @@ void check_param(const Param& param, const std::vector<double>& values);
 class ParamValues {
  public:
   bool has(const std::string& name) const { return values_.count(name) != 0; }
-  std::int64_t integer(const std::string& name) const;  ///< fits int64 (the schema's range says so)
+  std::int64_t integer(const std::string& name) const;            ///< fits int64 (the schema's range says so)
   std::uint64_t unsigned_integer(const std::string& name) const;  ///< a non-negative integer
-  double real(const std::string& name) const;  ///< also an integer parameter, converted
+  double real(const std::string& name) const;                     ///< also an integer parameter, converted
   bool flag(const std::string& name) const;
   const std::string& text(const std::string& name) const;  ///< choice or text
   const std::vector<std::int64_t>& integers(const std::string& name) const;

@@ -15,17 +15,17 @@ namespace stratum::render {
 
 struct Ray {
   Vec3 origin;
-  Vec3 direction;      ///< need not be unit length; t is in its units
-  double time = 0;     ///< in [0, 1]: shutter open to shutter close
+  Vec3 direction;   ///< need not be unit length; t is in its units
+  double time = 0;  ///< in [0, 1]: shutter open to shutter close
   double t_max = 1e300;
 };
 
 struct Hit {
   double t = 0;
-  std::size_t shape = 0;  ///< index into Scene::shapes
+  std::size_t shape = 0;      ///< index into Scene::shapes
   std::size_t primitive = 0;  ///< triangles: index into Shape::indices (0 for other shapes)
   Vec3 position;
-  Vec3 normal;            ///< unit geometric normal, as the shape is oriented (not flipped to the ray)
+  Vec3 normal;  ///< unit geometric normal, as the shape is oriented (not flipped to the ray)
 };
 
 class Accelerator {

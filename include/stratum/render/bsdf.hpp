@@ -51,8 +51,11 @@ struct BsdfSample {
 class Bsdf {
  public:
   Bsdf(const Material& material, Vec3 normal, Vec3 wo)
-      : rho_(material.reflectance), n_(normal), glossy_(material.type == MaterialType::glossy),
-        exponent_(material.exponent), mirror_((2 * dot(normal, wo)) * normal - wo) {}
+      : rho_(material.reflectance),
+        n_(normal),
+        glossy_(material.type == MaterialType::glossy),
+        exponent_(material.exponent),
+        mirror_((2 * dot(normal, wo)) * normal - wo) {}
 
   Vec3 normal() const noexcept { return n_; }
   bool glossy() const noexcept { return glossy_; }

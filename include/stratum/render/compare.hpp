@@ -22,14 +22,14 @@ struct CompareRow {
   std::uint32_t samples = 0;  ///< eye rays per pixel taken
   double mse = 0, relative_mse = 0, seconds = 0, efficiency = 0;
   double mse_ratio = 1, efficiency_ratio = 1;  ///< baseline / this for MSE; this / baseline for efficiency
-  std::uint32_t passes = 1;    ///< equal time: independent renders averaged (1 at equal samples)
+  std::uint32_t passes = 1;                    ///< equal time: independent renders averaged (1 at equal samples)
   /// Where the error goes (analysis/image_spectrum.hpp): the power spectrum
   /// of the luminance of render − reference, normalized so white noise is 1;
   /// low_frequency_power is its mean below a quarter of Nyquist (< 1: blue
   /// noise). NaN and empty for images under 4 pixels a side.
   double low_frequency_power = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> error_radial_frequency, error_radial_power;
-  std::string variance_path;   ///< where its variance image was written (CompareOptions::variance_dir)
+  std::string variance_path;  ///< where its variance image was written (CompareOptions::variance_dir)
 };
 
 /// How compare() runs, beyond the configurations.
@@ -89,8 +89,9 @@ double mean_squared_error(const Image& image, const Image& reference);
 double relative_mean_squared_error(const Image& image, const Image& reference);
 
 /// Runs every configuration and measures it against its reference.
-std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
-                                std::uint32_t reference_spp, const std::string& cache_dir);
+std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key,
+                                const std::vector<CompareConfig>& configs, std::uint32_t reference_spp,
+                                const std::string& cache_dir);
 
 /// Reads an image written by write_image (EXR) back (for cached references).
 Image read_image(const std::string& path);
@@ -105,8 +106,9 @@ std::string reference_cache_path(const Scene& scene, const std::string& scene_ke
 /// when given, receives the renders and the first reference. The
 /// configurations share one BVH, built before the first: a row's seconds
 /// are its sampling and tracing, what the configurations differ in.
-std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key, const std::vector<CompareConfig>& configs,
-                                const CompareOptions& options, CompareImages* images = nullptr);
+std::vector<CompareRow> compare(const Scene& scene, const std::string& scene_key,
+                                const std::vector<CompareConfig>& configs, const CompareOptions& options,
+                                CompareImages* images = nullptr);
 
 /// Equal-time rendering (LECTURE.md §2: efficiency at equal cost): passes
 /// of the configuration's spp samples per pixel until `seconds` have passed

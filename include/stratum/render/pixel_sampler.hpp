@@ -59,9 +59,9 @@ namespace stratum::render {
 
 struct PixelSamplerSettings {
   std::string sampler = "sobol";
-  std::string randomize;    ///< empty: the sampler's default
+  std::string randomize;  ///< empty: the sampler's default
   std::uint64_t seed = 0;
-  std::uint32_t spp = 16;   ///< samples per pixel
+  std::uint32_t spp = 16;    ///< samples per pixel
   std::string time_pattern;  ///< "", "random", "cook" or "magic-square"
   /// The image's larger side in pixels (render() sets it): zsobol orders the
   /// pixels along a Morton curve of this size. 0: one pixel.
@@ -107,13 +107,17 @@ class PixelSampler {
     const std::uint64_t seed = hash64_extend(array_prefix(dimension_++), sequence_index_);
     if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
     switch (fast_) {
-      case Fast::random: return keyed_points<Fast::random>(set_key(seed), array_root_, n, out);
-      case Fast::sobol_owen_hash: return keyed_points<Fast::sobol_owen_hash>(set_key(seed), array_root_, n, out);
+      case Fast::random:
+        return keyed_points<Fast::random>(set_key(seed), array_root_, n, out);
+      case Fast::sobol_owen_hash:
+        return keyed_points<Fast::sobol_owen_hash>(set_key(seed), array_root_, n, out);
       case Fast::jittered:
         if (array_root_ * array_root_ != n) break;  // the registry names the bad count
         return keyed_points<Fast::jittered>(set_key(seed), array_root_, n, out);
-      case Fast::pmj02: return keyed_points<Fast::pmj02>(set_key(seed), array_root_, n, out);
-      case Fast::none: break;
+      case Fast::pmj02:
+        return keyed_points<Fast::pmj02>(set_key(seed), array_root_, n, out);
+      case Fast::none:
+        break;
     }
     get_2d_array_slow(seed, dimension_ - 1, n, out);
   }
@@ -137,7 +141,8 @@ class PixelSampler {
  private:
   const PointSet& set_for(std::uint32_t dimension);
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
-  PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed, std::uint64_t start = 0) const;
+  PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
+                std::uint64_t start = 0) const;
   /// get_2d off the direct paths; `coordinates` 1: only the first is used.
   std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
   void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::array<double, 2>* out);
@@ -156,14 +161,16 @@ class PixelSampler {
   static constexpr unsigned zsobol_block_levels = 4;
   /// The sequence index of this pixel's current sample in `dimension`'s pair.
   std::uint64_t zsobol_index(std::uint32_t dimension) {
-    while (zsobol_pairs_.size() <= dimension) zsobol_pairs_.push_back(zsobol_->pair(std::uint32_t(zsobol_pairs_.size())));
+    while (zsobol_pairs_.size() <= dimension)
+      zsobol_pairs_.push_back(zsobol_->pair(std::uint32_t(zsobol_pairs_.size())));
     if (zsobol_stamps_.size() <= dimension) {
       zsobol_stamps_.resize(dimension + 1, 0), zsobol_pixel_digits_.resize(dimension + 1);
       zsobol_blocks_.resize(dimension + 1, ~std::uint64_t{0}), zsobol_block_digits_.resize(dimension + 1);
     }
     const ZSobol::Pair& pair = zsobol_pairs_[dimension];
     if (zsobol_stamps_[dimension] != pixel_stamp_) {
-      const std::uint64_t block = (std::uint64_t{pixel_y_ >> zsobol_block_levels} << 32) | (pixel_x_ >> zsobol_block_levels);
+      const std::uint64_t block =
+          (std::uint64_t{pixel_y_ >> zsobol_block_levels} << 32) | (pixel_x_ >> zsobol_block_levels);
       if (zsobol_blocks_[dimension] != block) {
         zsobol_block_digits_[dimension] = zsobol_->block_digits(pixel_x_, pixel_y_, pair, zsobol_block_levels);
         zsobol_blocks_[dimension] = block;
@@ -184,7 +191,8 @@ class PixelSampler {
   const SobolBn::PixelPair& sobol_bn_pair(std::uint32_t dimension) {
     while (sobol_bn_shared_.size() <= dimension)
       sobol_bn_shared_.push_back(sobol_bn_->shared_pair(std::uint32_t(sobol_bn_shared_.size())));
-    if (sobol_bn_stamps_.size() <= dimension) sobol_bn_stamps_.resize(dimension + 1, 0), sobol_bn_pixel_.resize(dimension + 1);
+    if (sobol_bn_stamps_.size() <= dimension)
+      sobol_bn_stamps_.resize(dimension + 1, 0), sobol_bn_pixel_.resize(dimension + 1);
     if (sobol_bn_stamps_[dimension] != pixel_stamp_) {
       sobol_bn_pixel_[dimension] = sobol_bn_->pixel_pair(pixel_x_, pixel_y_, dimension, sobol_bn_shared_[dimension]);
       sobol_bn_stamps_[dimension] = pixel_stamp_;
@@ -211,8 +219,8 @@ class PixelSampler {
   void build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set, unsigned coordinates = 2) const noexcept;
   /// Point `index` of a built set (its first `set.coordinates` coordinates; the others 0).
   static std::array<double, 2> halton_point(const HaltonSet& set, std::uint64_t index) noexcept;
-  bool halton_direct_ = false;  ///< halton_permute_ and offset_ + spp ≤ halton_direct_max
-  std::vector<HaltonSet> halton_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
+  bool halton_direct_ = false;                        ///< halton_permute_ and offset_ + spp ≤ halton_direct_max
+  std::vector<HaltonSet> halton_sets_;                ///< this pixel's get_2d sets, by dimension (cache)
   std::vector<unsigned __int128> halton_weights_[2];  ///< W_j of bases 2 and 3 (digits.hpp)
 
   // The seed hashing a pixel's draws share is done once per pixel (or per
@@ -239,7 +247,7 @@ class PixelSampler {
     std::uint64_t a = 0, b = 0;
   };
   SetKey set_key(std::uint64_t seed) const noexcept {
-    if (fast_ == Fast::random) return {hash64(seed)};                           // RandomPattern: uniform01(seed, ·, ·)
+    if (fast_ == Fast::random) return {hash64(seed)};                          // RandomPattern: uniform01(seed, ·, ·)
     if (fast_ == Fast::jittered) return {hash64(hash64(seed, tag_jittered))};  // Jittered: uniform01(key, ·, ·)
     if (fast_ == Fast::sobol_owen_hash) {  // HashOwenScrambler(seed)'s scramblers of dimensions 0 and 1
       const std::uint64_t base = hash64(seed, 0x6f68617368ULL /* "ohash" */);
@@ -278,11 +286,16 @@ class PixelSampler {
   template <int coordinates>
   std::array<double, 2> keyed_point(SetKey key, std::uint64_t root, std::uint64_t index) const noexcept {
     switch (fast_) {
-      case Fast::random: return kind_point<Fast::random, coordinates>(key, root, index);
-      case Fast::sobol_owen_hash: return kind_point<Fast::sobol_owen_hash, coordinates>(key, root, index);
-      case Fast::jittered: return kind_point<Fast::jittered, coordinates>(key, root, index);
-      case Fast::pmj02: return kind_point<Fast::pmj02, coordinates>(key, root, index);
-      case Fast::none: break;
+      case Fast::random:
+        return kind_point<Fast::random, coordinates>(key, root, index);
+      case Fast::sobol_owen_hash:
+        return kind_point<Fast::sobol_owen_hash, coordinates>(key, root, index);
+      case Fast::jittered:
+        return kind_point<Fast::jittered, coordinates>(key, root, index);
+      case Fast::pmj02:
+        return kind_point<Fast::pmj02, coordinates>(key, root, index);
+      case Fast::none:
+        break;
     }
     return {0, 0};
   }
@@ -313,9 +326,9 @@ class PixelSampler {
   bool direct_for(std::uint64_t n) const noexcept;
 
   PixelSamplerSettings settings_;
-  Fast fast_ = Fast::none;  ///< a direct path for the common samplers
+  Fast fast_ = Fast::none;       ///< a direct path for the common samplers
   bool halton_permute_ = false;  ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
-  std::string spacetime_;  ///< the space-time sampler, or empty
+  std::string spacetime_;        ///< the space-time sampler, or empty
   bool has_spacetime_ = false;
   std::uint64_t pixel_key_ = 0;
   std::uint32_t pixel_x_ = 0, pixel_y_ = 0;
@@ -329,9 +342,9 @@ class PixelSampler {
   std::array<SetKey, cached_dimensions> dimension_keys_{};
   const Sobol* sobol_ = nullptr;  ///< sobol_2d() on the sobol path
   std::array<std::uint64_t, cached_dimensions> array_prefixes_{};
-  std::uint64_t spp_root_ = 0;               ///< ⌊√spp⌋ (jittered's strata per axis)
-  std::uint32_t array_n_ = 0;                ///< the last get_2d_array count …
-  std::uint64_t array_root_ = 0;             ///< … and ⌊√n⌋
+  std::uint64_t spp_root_ = 0;    ///< ⌊√spp⌋ (jittered's strata per axis)
+  std::uint32_t array_n_ = 0;     ///< the last get_2d_array count …
+  std::uint64_t array_root_ = 0;  ///< … and ⌊√n⌋
   /// The frame's seed: settings_.seed for frame 0 and for progressive
   /// samplers, hash(seed, frame) otherwise; and the index of the frame's
   /// first sample in each pixel's sequence (frame · spp for progressive samplers, else 0).

@@ -19,15 +19,15 @@ class OutputFile;
 namespace stratum::render {
 
 struct RenderSettings {
-  std::string integrator = "direct";      ///< direct | irradiance | path
-  std::uint32_t light_samples = 1;        ///< shadow rays per eye-ray hit (M)
-  std::string light_strategy = "area";    ///< area | solid-angle | projected-solid-angle | bsdf | mis
-  std::string hemisphere = "cosine";      ///< irradiance: uniform | cosine
-  std::uint32_t max_depth = 5;            ///< path: longest path (and mirror chains in direct)
-  PixelSamplerSettings sampler;           ///< spp = eye rays per pixel
+  std::string integrator = "direct";    ///< direct | irradiance | path
+  std::uint32_t light_samples = 1;      ///< shadow rays per eye-ray hit (M)
+  std::string light_strategy = "area";  ///< area | solid-angle | projected-solid-angle | bsdf | mis
+  std::string hemisphere = "cosine";    ///< irradiance: uniform | cosine
+  std::uint32_t max_depth = 5;          ///< path: longest path (and mirror chains in direct)
+  PixelSamplerSettings sampler;         ///< spp = eye rays per pixel
   unsigned threads = 1;
-  double time_limit = 0;                  ///< seconds; 0: none (stops after the current pass)
-  std::uint32_t passes = 4;               ///< progressive passes (at most spp)
+  double time_limit = 0;     ///< seconds; 0: none (stops after the current pass)
+  std::uint32_t passes = 4;  ///< progressive passes (at most spp)
   /// Shoot every eye ray through the pixel's centre: the estimand becomes
   /// the radiance at the centre, so that comparisons of light sampling are
   /// not swamped by the antialiasing error of edges and visible lights.
@@ -38,14 +38,14 @@ struct RenderSettings {
 /// of the estimate's mean (for z-tests and variance images).
 struct Image {
   int width = 0, height = 0;
-  std::uint32_t samples = 0;   ///< samples per pixel actually taken (in every pixel)
-  std::uint32_t passes = 0;    ///< passes completed
+  std::uint32_t samples = 0;  ///< samples per pixel actually taken (in every pixel)
+  std::uint32_t passes = 0;   ///< passes completed
   /// A stop (Ctrl-C) ended the render before its last pass; `partial_pass`
   /// of its tiles had also finished the pass it cut short (their pixels
   /// average those samples too; tiles not rendered at all are black).
   bool stopped = false;
   double partial_pass = 0;
-  std::vector<double> rgb;     ///< width·height·3, row-major, top row first
+  std::vector<double> rgb;       ///< width·height·3, row-major, top row first
   std::vector<double> variance;  ///< width·height·3: variance of each channel's mean
   double seconds = 0;
 };

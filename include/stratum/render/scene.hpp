@@ -22,8 +22,8 @@ struct Camera {
   double fov_degrees = 39.3077;  ///< vertical field of view
   int width = 256;
   int height = 256;
-  double aperture_radius = 0;    ///< lens radius, scene units
-  double focus_distance = 1;     ///< distance to the plane in focus (used when aperture_radius > 0)
+  double aperture_radius = 0;  ///< lens radius, scene units
+  double focus_distance = 1;   ///< distance to the plane in focus (used when aperture_radius > 0)
   double shutter_open = 0;
   double shutter_close = 1;
 };
@@ -49,10 +49,10 @@ struct Shape {
   ShapeType type = ShapeType::quad;
   std::size_t material = 0;  ///< index into Scene::materials
   Vec3 center{}, motion{};
-  double radius = 0;               ///< sphere, disk
-  Vec3 normal{};                   ///< disk: unit normal (the emitting side); centre and radius above
+  double radius = 0;                  ///< sphere, disk
+  Vec3 normal{};                      ///< disk: unit normal (the emitting side); centre and radius above
   Vec3 corner{}, edge_u{}, edge_v{};  ///< quad: corner + s·edge_u + t·edge_v, s, t ∈ [0,1]
-  std::vector<Vec3> vertices;      ///< triangles
+  std::vector<Vec3> vertices;         ///< triangles
   std::vector<std::array<unsigned, 3>> indices;
   /// triangles: running sums of the triangles' areas (filled by
   /// validate_scene), for picking a triangle by area when sampling a light.
@@ -65,10 +65,10 @@ enum class LightType { area, point, environment };
 /// (intensity), or a constant environment (radiance from every direction).
 struct Light {
   LightType type = LightType::area;
-  std::size_t shape = 0;   ///< area: index into Scene::shapes
-  Vec3 position{};         ///< point
-  Vec3 intensity{};        ///< point: W/sr per channel
-  Vec3 radiance{};         ///< environment
+  std::size_t shape = 0;  ///< area: index into Scene::shapes
+  Vec3 position{};        ///< point
+  Vec3 intensity{};       ///< point: W/sr per channel
+  Vec3 radiance{};        ///< environment
 };
 
 struct Scene {

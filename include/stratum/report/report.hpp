@@ -19,9 +19,9 @@ struct ReportOptions {
   /// Extra registry samplers ("name" or "name:randomizer") added to every
   /// comparison of patterns (stratification, discrepancy, the four views).
   std::vector<std::string> extra_samplers;
-  std::vector<std::string> only;  ///< section ids to run (empty: every section)
-  unsigned threads = 0;           ///< 0: every core
-  std::uint64_t seed = 0;  ///< stratum::default_seed
+  std::vector<std::string> only;             ///< section ids to run (empty: every section)
+  unsigned threads = 0;                      ///< 0: every core
+  std::uint64_t seed = 0;                    ///< stratum::default_seed
   std::string cache_dir = ".stratum-cache";  ///< converged reference renders, reused across runs
 };
 
@@ -52,7 +52,7 @@ struct Section {
   /// measurement with other samplers, shown at the end of the section.
   std::vector<std::string> try_it;
   nlohmann::json numbers = nlohmann::json::object();  ///< the measurements, written to report.json
-  double seconds = 0;                                  ///< wall time of the section
+  double seconds = 0;                                 ///< wall time of the section
 };
 
 class SectionContext;  // src/report/section_context.hpp

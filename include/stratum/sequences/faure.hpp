@@ -42,7 +42,8 @@ class Faure {
     base_ = base_for(dimensions);
     reciprocal_ = radical_inverse_reciprocal(base_);
     index_digits_ = 0;
-    for (unsigned __int128 power = 1; power < (static_cast<unsigned __int128>(1) << 64); power *= base_) ++index_digits_;
+    for (unsigned __int128 power = 1; power < (static_cast<unsigned __int128>(1) << 64); power *= base_)
+      ++index_digits_;
     output_digits_ = 0;
     for (unsigned __int128 power = base_; power <= (static_cast<unsigned __int128>(1) << 64); power *= base_)
       ++output_digits_;
@@ -110,7 +111,8 @@ class Faure {
     std::vector<std::uint32_t> powers(cols);
     for (unsigned j = 0; j < dimensions_; ++j) {
       powers[0] = 1;
-      for (unsigned e = 1; e < cols; ++e) powers[e] = static_cast<std::uint32_t>(std::uint64_t{powers[e - 1]} * j % base_);
+      for (unsigned e = 1; e < cols; ++e)
+        powers[e] = static_cast<std::uint32_t>(std::uint64_t{powers[e - 1]} * j % base_);
       for (unsigned r = 0; r < rows; ++r)
         for (unsigned c = r; c < cols; ++c)
           matrices_[(static_cast<std::size_t>(j) * rows + r) * cols + c] =

@@ -114,8 +114,8 @@ inline std::uint64_t golden_generator(std::uint64_t n) noexcept {
   std::uint64_t low = static_cast<std::uint64_t>(target);  // floor (target > 0)
   std::uint64_t high = low + 1;
   for (;;) {
-    const bool take_low = low >= 1 && (high >= n || target - static_cast<long double>(low) <=
-                                                         static_cast<long double>(high) - target);
+    const bool take_low =
+        low >= 1 && (high >= n || target - static_cast<long double>(low) <= static_cast<long double>(high) - target);
     const std::uint64_t candidate = take_low ? low : high;
     if (std::gcd(candidate, n) == 1) return candidate;
     if (take_low) --low;

@@ -161,7 +161,8 @@ class Pmj02 {
   /// (those of the link before) from its own random word hash64(k, link) and
   /// flips digit m+1 relative to the next link. `key` is hash64(k)
   /// (digit_key), so each word is one hash64_extend.
-  STRATUM_HOST_DEVICE static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate, std::uint64_t key) noexcept {
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t keyed_bits(std::uint64_t index, unsigned coordinate,
+                                                                std::uint64_t key) noexcept {
     std::uint64_t value = 0;
     std::uint64_t flips = 0;
     std::uint64_t unset = ~std::uint64_t{0};  // digits still to fill (high bits)

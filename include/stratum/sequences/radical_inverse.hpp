@@ -14,19 +14,22 @@ namespace stratum {
 /// ⌈2^64 / b⌉: the high word of index × this is ⌊index / b⌋ exactly for
 /// index < 2^(64 − ⌈log2 b⌉) (Lemire, Kaser, Kurz 2019, "Faster remainder by
 /// direct computation", Theorem 1), which spares a 64-bit division per digit.
-STRATUM_HOST_DEVICE constexpr std::uint64_t radical_inverse_reciprocal(std::uint32_t base) noexcept { return ~std::uint64_t{0} / base + 1; }
+STRATUM_HOST_DEVICE constexpr std::uint64_t radical_inverse_reciprocal(std::uint32_t base) noexcept {
+  return ~std::uint64_t{0} / base + 1;
+}
 
 /// φ_b(index) with b's reciprocal precomputed (radical_inverse_reciprocal).
-STRATUM_HOST_DEVICE constexpr double radical_inverse(std::uint32_t base, std::uint64_t index, std::uint64_t reciprocal) noexcept {
+STRATUM_HOST_DEVICE constexpr double radical_inverse(std::uint32_t base, std::uint64_t index,
+                                                     std::uint64_t reciprocal) noexcept {
   if (base == 2) return static_cast<double>(reverse_bits64(index) >> 11) * 0x1.0p-53;
   const std::uint64_t limit = (std::uint64_t{1} << 63) / base;
   const std::uint64_t exact_below = std::uint64_t{1} << (64 - bit_width64(base - 1));
   std::uint64_t reversed = 0;
   std::uint64_t power = 1;
   while (index != 0 && power <= limit) {
-    const std::uint64_t next = index < exact_below
-                                   ? static_cast<std::uint64_t>((static_cast<unsigned __int128>(index) * reciprocal) >> 64)
-                                   : index / base;
+    const std::uint64_t next =
+        index < exact_below ? static_cast<std::uint64_t>((static_cast<unsigned __int128>(index) * reciprocal) >> 64)
+                            : index / base;
     reversed = reversed * base + (index - next * base);
     power *= base;
     index = next;

@@ -199,10 +199,8 @@ class Sobol {
   /// Top 53 (double) or 24 (float) bits of a 64-bit fraction, exactly, in [0, 1).
   template <class Real>
   STRATUM_HOST_DEVICE static constexpr Real bits_to_unit(std::uint64_t word) noexcept {
-    if constexpr (sizeof(Real) == sizeof(float))
-      return bits_to_float(word);
-    else
-      return bits_to_double(word);
+    if constexpr (sizeof(Real) == sizeof(float)) return bits_to_float(word);
+    else return bits_to_double(word);
   }
 
   /// Generator-matrix columns of dimension dim from the Joe–Kuo table:

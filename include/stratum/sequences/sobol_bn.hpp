@@ -111,7 +111,8 @@ inline BlueNoiseTable parse_blue_noise_table(std::string_view bytes, const std::
           "has " + std::to_string(bytes.size()) + " bytes; its header promises " +
               std::to_string(header_bytes + 2 * count));
   table.ranks.resize(count);
-  for (std::size_t i = 0; i < count; ++i) table.ranks[i] = static_cast<std::uint16_t>(get(bytes, header_bytes + 2 * i, 2));
+  for (std::size_t i = 0; i < count; ++i)
+    table.ranks[i] = static_cast<std::uint16_t>(get(bytes, header_bytes + 2 * i, 2));
   for (std::uint32_t p = 0; p < table.pairs(); ++p) {  // each pair's ranks: a permutation of the pixels
     std::vector<bool> seen(pixels, false);
     for (std::size_t i = 0; i < pixels; ++i) {
@@ -171,7 +172,8 @@ class SobolBn {
     const std::uint64_t mask = table_->size - 1;
     // The tile's place (12 bits per axis, wrapping), Morton-interleaved, above the rank.
     const std::uint64_t tile = interleave((sx >> log2_size_) & 0xfffu) | interleave((sy >> log2_size_) & 0xfffu) << 1;
-    const std::uint64_t block = tile << (2 * log2_size_) | table_->rank(std::uint32_t(sx & mask), std::uint32_t(sy & mask), p);
+    const std::uint64_t block =
+        tile << (2 * log2_size_) | table_->rank(std::uint32_t(sx & mask), std::uint32_t(sy & mask), p);
     PixelPair out = shared;
     out.first = block * spp_;
     return out;
@@ -197,14 +199,15 @@ class SobolBn {
     return point_at((pair.first + index) * n + j, pair);
   }
   /// Coordinates (2p, 2p + 1) of sample `index` of pixel (x, y).
-  std::array<double, 2> sample_2d(std::uint32_t x, std::uint32_t y, std::uint64_t index, std::uint32_t p) const noexcept {
+  std::array<double, 2> sample_2d(std::uint32_t x, std::uint32_t y, std::uint64_t index,
+                                  std::uint32_t p) const noexcept {
     return point(index, pixel_pair(x, y, p));
   }
 
  private:
-  static constexpr std::uint64_t tag_offset = 0x626e'6f66'6673ULL;    // "bnoffs"
-  static constexpr std::uint64_t tag_scramble = 0x626e'7363'72ULL;    // "bnscr"
-  static constexpr std::uint64_t tag_padding = 0x626e'7061'64ULL;     // "bnpad"
+  static constexpr std::uint64_t tag_offset = 0x626e'6f66'6673ULL;  // "bnoffs"
+  static constexpr std::uint64_t tag_scramble = 0x626e'7363'72ULL;  // "bnscr"
+  static constexpr std::uint64_t tag_padding = 0x626e'7061'64ULL;   // "bnpad"
   static const Sobol& sobol_2d() {
     static const Sobol sobol(2);
     return sobol;

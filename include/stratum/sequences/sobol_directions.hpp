@@ -14,8 +14,8 @@ namespace stratum::sobol_joe_kuo {
 
 /// Primitive polynomial and initial direction numbers of one dimension.
 struct Directions {
-  unsigned degree = 0;           ///< s; 0 for dimension 0 (van der Corput)
-  std::uint32_t polynomial = 0;  ///< bits a_s..a_0 (a_s = a_0 = 1), as Boost and scipy store it
+  unsigned degree = 0;               ///< s; 0 for dimension 0 (van der Corput)
+  std::uint32_t polynomial = 0;      ///< bits a_s..a_0 (a_s = a_0 = 1), as Boost and scipy store it
   std::uint32_t m[max_degree] = {};  ///< m_1..m_s: odd, m_k < 2^k
 };
 

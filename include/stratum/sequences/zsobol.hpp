@@ -113,7 +113,8 @@ class ZSobol {
   }
 
   /// Coordinates (2p, 2p + 1) of sample `index` of pixel (x, y), p = pair.
-  std::array<double, 2> sample_2d(std::uint32_t x, std::uint32_t y, std::uint64_t index, std::uint32_t p) const noexcept {
+  std::array<double, 2> sample_2d(std::uint32_t x, std::uint32_t y, std::uint64_t index,
+                                  std::uint32_t p) const noexcept {
     const Pair keys = pair(p);
     return point(sequence_index(x, y, index, keys), keys);
   }
@@ -122,7 +123,8 @@ class ZSobol {
   /// shadow rays of an eye ray): index sequence · 2^k + j of the pair's
   /// sequence, so the array is an aligned block (stratified among itself)
   /// and neighbouring pixels' arrays are neighbouring blocks.
-  std::array<double, 2> array_point(std::uint64_t sequence, unsigned k, std::uint64_t j, const Pair& pair) const noexcept {
+  std::array<double, 2> array_point(std::uint64_t sequence, unsigned k, std::uint64_t j,
+                                    const Pair& pair) const noexcept {
     return point((sequence << k) | j, pair);
   }
 

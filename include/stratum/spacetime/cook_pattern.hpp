@@ -38,9 +38,7 @@ inline constexpr std::array<std::uint32_t, 16> slide_cook_pattern = {6,  10, 2, 
 
 /// The smallest slot difference cook_slots(m) guarantees between strata
 /// sharing an edge (on the torus, except for the slide's m = 4 table).
-constexpr std::uint32_t cook_separation(std::uint32_t m) noexcept {
-  return m == 4 ? 2 : m >= 5 ? m : (m + 1) / 2;
-}
+constexpr std::uint32_t cook_separation(std::uint32_t m) noexcept { return m == 4 ? 2 : m >= 5 ? m : (m + 1) / 2; }
 
 /// The Cook-style table of order m (see above). Deterministic.
 inline SlotTable cook_slots(std::uint32_t m) {

@@ -51,7 +51,7 @@ namespace stratum {
 constexpr bool pandiagonal_magic_exists(std::uint64_t m) noexcept { return m == 1 || (m >= 4 && m % 4 != 2); }
 
 /// The lecture's 4×4 pan-diagonal magic square (rows top to bottom).
-inline constexpr std::array<std::uint32_t, 16> slide_magic_square = {15, 8, 5, 2,  4,  3, 14, 9,
+inline constexpr std::array<std::uint32_t, 16> slide_magic_square = {15, 8,  5, 2, 4, 3, 14, 9,
                                                                      10, 13, 0, 7, 1, 6, 11, 12};
 
 /// The magic sum of order m: m(m²−1)/2.

@@ -60,8 +60,7 @@ class invalid_argument : public std::invalid_argument {
   const std::string& argument() const noexcept { return argument_; }
 
  private:
-  static std::string compose(std::string_view argument, std::string_view value,
-                             std::string_view allowed) {
+  static std::string compose(std::string_view argument, std::string_view value, std::string_view allowed) {
     std::ostringstream out;
     out << "invalid " << argument << " = " << printable(value) << ": " << allowed;
     return out.str();

@@ -21,11 +21,12 @@ STRATUM_HOST_DEVICE constexpr std::uint64_t mix64(std::uint64_t x) noexcept {
 }
 
 /// Hash of a seed and any number of 64-bit counters.
-STRATUM_HOST_DEVICE constexpr std::uint64_t hash64(std::uint64_t seed) noexcept { return mix64(seed + 0x9e3779b97f4a7c15ULL); }
+STRATUM_HOST_DEVICE constexpr std::uint64_t hash64(std::uint64_t seed) noexcept {
+  return mix64(seed + 0x9e3779b97f4a7c15ULL);
+}
 template <class... Rest>
 STRATUM_HOST_DEVICE constexpr std::uint64_t hash64(std::uint64_t seed, std::uint64_t first, Rest... rest) noexcept {
-  return hash64(mix64(seed + 0x9e3779b97f4a7c15ULL) ^ (first * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL),
-                rest...);
+  return hash64(mix64(seed + 0x9e3779b97f4a7c15ULL) ^ (first * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL), rest...);
 }
 
 /// hash64(seed, c₁, …, c_k, c) from h = hash64(seed, c₁, …, c_k): one mix
@@ -56,7 +57,8 @@ STRATUM_HOST_DEVICE constexpr Real uniform01(std::uint64_t seed, Counters... cou
 /// with rejection (Lemire 2019, "Fast random integer generation in an interval"),
 /// drawing further words from the same counter stream when it rejects.
 template <class... Counters>
-STRATUM_HOST_DEVICE constexpr std::uint64_t uniform_below(std::uint64_t bound, std::uint64_t seed, Counters... counters) noexcept {
+STRATUM_HOST_DEVICE constexpr std::uint64_t uniform_below(std::uint64_t bound, std::uint64_t seed,
+                                                          Counters... counters) noexcept {
   const std::uint64_t key = hash64(seed, static_cast<std::uint64_t>(counters)...);
   for (std::uint64_t attempt = 0;; ++attempt) {
     const std::uint64_t word = hash64(key, attempt);

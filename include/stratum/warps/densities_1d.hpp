@@ -48,8 +48,7 @@ inline void check_linear_weights(double a, double b) {
   require(a >= 0 && std::isfinite(a), "a", a, "must be >= 0 and finite");
   require(b >= 0 && std::isfinite(b), "b", b, "must be >= 0 and finite");
   if (!(a + b > 0))
-    throw invalid_argument("a, b", to_message_string(a) + ", " + to_message_string(b),
-                           "must not both be zero");
+    throw invalid_argument("a, b", to_message_string(a) + ", " + to_message_string(b), "must not both be zero");
 }
 }  // namespace detail
 
@@ -114,8 +113,9 @@ class ExponentialDensity {
 /// measure-zero change.
 template <class Real>
 class NormalDensity {
-  using no_throw = boost::math::policies::policy<boost::math::policies::domain_error<boost::math::policies::ignore_error>,
-                                                 boost::math::policies::overflow_error<boost::math::policies::ignore_error>>;
+  using no_throw =
+      boost::math::policies::policy<boost::math::policies::domain_error<boost::math::policies::ignore_error>,
+                                    boost::math::policies::overflow_error<boost::math::policies::ignore_error>>;
 
  public:
   NormalDensity(Real mu, Real sigma) : mu_(mu), sigma_(sigma) {
@@ -149,8 +149,9 @@ class BilinearDensity {
     bool ok = true;
     for (Real v : w) ok = ok && v >= 0 && std::isfinite(v);
     if (!(ok && w[0] + w[1] + w[2] + w[3] > 0))
-      throw invalid_argument("weights", to_message_string(w[0]) + ", " + to_message_string(w[1]) + ", " + to_message_string(w[2]) + ", " +
-                to_message_string(w[3]),
+      throw invalid_argument("weights",
+                             to_message_string(w[0]) + ", " + to_message_string(w[1]) + ", " + to_message_string(w[2]) +
+                                 ", " + to_message_string(w[3]),
                              "weights must be >= 0, finite and not all zero");
   }
   std::array<Real, 2> sample(std::array<Real, 2> u) const noexcept {

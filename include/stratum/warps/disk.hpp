@@ -17,8 +17,8 @@ namespace stratum {
 /// may land on 1 or slightly below 0.
 template <class Real>
 STRATUM_HOST_DEVICE constexpr Real clamp_to_unit(Real value) noexcept {
-  constexpr Real below_one = sizeof(Real) == sizeof(float) ? Real(one_minus_epsilon_float)
-                                                           : Real(one_minus_epsilon_double);
+  constexpr Real below_one =
+      sizeof(Real) == sizeof(float) ? Real(one_minus_epsilon_float) : Real(one_minus_epsilon_double);
   return std::clamp(value, Real(0), below_one);
 }
 

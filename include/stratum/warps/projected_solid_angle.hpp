@@ -46,9 +46,7 @@ class ProjectedSolidAngle {
   const Spherical& spherical() const noexcept { return spherical_; }
   const BilinearDensity<Real>& bilinear() const noexcept { return bilinear_; }
 
-  Vector3<Real> sample(std::array<Real, 2> u) const noexcept {
-    return spherical_.sample(bilinear_.sample(u));
-  }
+  Vector3<Real> sample(std::array<Real, 2> u) const noexcept { return spherical_.sample(bilinear_.sample(u)); }
   Real pdf(const Vector3<Real>& w) const noexcept {
     if (!spherical_.contains(w)) return Real(0);
     return bilinear_.pdf(spherical_.invert(w)) / spherical_.solid_angle();
@@ -61,9 +59,7 @@ class ProjectedSolidAngle {
   /// max(0.01, |n·ω|) at the images of u = (0,0), (1,0), (0,1), (1,1).
   static std::array<Real, 4> corner_weights(const Spherical& spherical, const Vector3<Real>& normal) {
     using namespace vector3;
-    if (!(length(normal) > Real(0)))
-      throw invalid_argument("normal", to_text(normal),
-                             "must be a non-zero vector");
+    if (!(length(normal) > Real(0))) throw invalid_argument("normal", to_text(normal), "must be a non-zero vector");
     const Vector3<Real> n = normalize(normal);
     const auto corners = spherical.corner_directions();
     std::array<Real, 4> w{};

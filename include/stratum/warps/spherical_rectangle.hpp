@@ -37,18 +37,18 @@ class SphericalRectangle {
     using namespace vector3;
     const Real length_u = length(edge_u), length_v = length(edge_v);
     if (!(length_u > Real(0)))
-      throw invalid_argument("edge_u", to_text(edge_u),
-                             "must be non-zero (a rectangle with positive area)");
+      throw invalid_argument("edge_u", to_text(edge_u), "must be non-zero (a rectangle with positive area)");
     if (!(length_v > Real(0)))
-      throw invalid_argument("edge_v", to_text(edge_v),
-                             "must be non-zero (a rectangle with positive area)");
+      throw invalid_argument("edge_v", to_text(edge_v), "must be non-zero (a rectangle with positive area)");
     const Real tolerance = sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-9);
     if (!(length(cross(edge_u, edge_v)) > tolerance * length_u * length_v))
-      throw invalid_argument("edge_v", to_text(edge_v),
-                             "must not be parallel to edge_u = " + to_text(edge_u) + " (a rectangle with positive area)");
+      throw invalid_argument(
+          "edge_v", to_text(edge_v),
+          "must not be parallel to edge_u = " + to_text(edge_u) + " (a rectangle with positive area)");
     if (!(std::abs(dot(edge_u, edge_v)) <= tolerance * length_u * length_v))
-      throw invalid_argument("edge_v", to_text(edge_v),
-                             "must be perpendicular to edge_u = " + to_text(edge_u) + " (a rectangle, not a parallelogram)");
+      throw invalid_argument(
+          "edge_v", to_text(edge_v),
+          "must be perpendicular to edge_u = " + to_text(edge_u) + " (a rectangle, not a parallelogram)");
     x_ = scale(edge_u, Real(1) / length_u);
     y_ = scale(edge_v, Real(1) / length_v);
     z_ = cross(x_, y_);
@@ -57,8 +57,8 @@ class SphericalRectangle {
     const Real scale_of_scene = length(d) + length_u + length_v;
     if (!(std::abs(z0_) > tolerance * scale_of_scene))
       throw invalid_argument("origin", to_text(origin),
-                             "must not lie on the rectangle's plane (corner " + to_text(corner) + ", edges " + to_text(edge_u) +
-                ", " + to_text(edge_v) + ")");
+                             "must not lie on the rectangle's plane (corner " + to_text(corner) + ", edges " +
+                                 to_text(edge_u) + ", " + to_text(edge_v) + ")");
     if (z0_ > Real(0)) z_ = scale(z_, Real(-1)), z0_ = -z0_;
     x0_ = dot(d, x_), y0_ = dot(d, y_);
     x1_ = x0_ + length_u, y1_ = y0_ + length_v;
@@ -74,8 +74,8 @@ class SphericalRectangle {
     const Real min_area = sizeof(Real) == sizeof(float) ? Real(1e-5) : Real(1e-12);
     if (!(std::isfinite(solid_angle_) && solid_angle_ > min_area))
       throw invalid_argument("origin", to_text(origin),
-                             "the rectangle subtends " + to_message_string(solid_angle_) + " sr from it; it must subtend more than " +
-                to_message_string(min_area) + " sr");
+                             "the rectangle subtends " + to_message_string(solid_angle_) +
+                                 " sr from it; it must subtend more than " + to_message_string(min_area) + " sr");
   }
 
   Real solid_angle() const noexcept { return solid_angle_; }

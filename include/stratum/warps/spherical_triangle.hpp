@@ -49,8 +49,7 @@ class SphericalTriangle {
     const std::array<Vector3<Real>, 3> v{v0, v1, v2};
     for (std::size_t i = 0; i < 3; ++i)
       if (!(length(sub(v[i], origin)) > Real(0)))
-        throw invalid_argument("vertices", to_text(v[i]),
-                               "each vertex must differ from the origin " + to_text(origin));
+        throw invalid_argument("vertices", to_text(v[i]), "each vertex must differ from the origin " + to_text(origin));
     a_ = normalize(sub(v0, origin)), b_ = normalize(sub(v1, origin)), c_ = normalize(sub(v2, origin));
     // Girard: the area is the spherical excess α + β + γ − π, the angles
     // being those between the great-circle planes through each pair.
@@ -64,17 +63,17 @@ class SphericalTriangle {
     const Real min_area = sizeof(Real) == sizeof(float) ? Real(1e-5) : Real(1e-12);
     if (!(std::isfinite(area_) && area_ > min_area))
       throw invalid_argument("vertices", to_text(v0) + ", " + to_text(v1) + ", " + to_text(v2),
-                             "the triangle seen from the origin " + to_text(origin) + " subtends " + to_message_string(area_) +
-                " sr; it must subtend a positive solid angle (> " + to_message_string(min_area) +
-                " sr): vertices not collinear and their plane not through the origin");
+                             "the triangle seen from the origin " + to_text(origin) + " subtends " +
+                                 to_message_string(area_) + " sr; it must subtend a positive solid angle (> " +
+                                 to_message_string(min_area) +
+                                 " sr): vertices not collinear and their plane not through the origin");
     cos_alpha_ = std::cos(alpha_), sin_alpha_ = std::sin(alpha_);
     cos_c_ = dot(a_, b_);
     c_perp_a_ = perpendicular_part(c_, a_);
     // Inward normals of the three great-circle edges: a direction is inside
     // when it lies on the inner side of all three.
     const Real orientation = dot(a_, cross(b_, c_)) > Real(0) ? Real(1) : Real(-1);
-    inward_[0] = scale(n_ab, orientation), inward_[1] = scale(n_bc, orientation),
-    inward_[2] = scale(n_ca, orientation);
+    inward_[0] = scale(n_ab, orientation), inward_[1] = scale(n_bc, orientation), inward_[2] = scale(n_ca, orientation);
   }
 
   Real solid_angle() const noexcept { return area_; }

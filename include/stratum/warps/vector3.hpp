@@ -55,7 +55,8 @@ Vector3<Real> perpendicular_part(const Vector3<Real>& a, const Vector3<Real>& b)
 /// instead of acos(a·b), whose slope is infinite there.
 template <class Real>
 Real angle_between(const Vector3<Real>& a, const Vector3<Real>& b) noexcept {
-  if (dot(a, b) < Real(0)) return std::numbers::pi_v<Real> - Real(2) * std::asin(std::min(Real(1), length(add(a, b)) / Real(2)));
+  if (dot(a, b) < Real(0))
+    return std::numbers::pi_v<Real> - Real(2) * std::asin(std::min(Real(1), length(add(a, b)) / Real(2)));
   return Real(2) * std::asin(std::min(Real(1), length(sub(a, b)) / Real(2)));
 }
 
