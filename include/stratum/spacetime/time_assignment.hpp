@@ -76,7 +76,8 @@ inline SlotTable random_slots(std::uint32_t m, std::uint64_t seed) {
 /// uniform jitter from (seed, index, dimension). Index-addressable.
 class SpaceTimePattern {
  public:
-  SpaceTimePattern(SlotTable table, std::uint64_t seed) : table_(std::move(table)), key_(hash64(seed, 0x5354'4a49'54ULL)) {
+  SpaceTimePattern(SlotTable table, std::uint64_t seed)
+      : table_(std::move(table)), key_(hash64(seed, 0x5354'4a49'54ULL)) {
     require(table_.order >= 1 && table_.is_permutation(), "table", table_.order,
             "a slot table must hold a permutation of 0 .. m^2 - 1");
   }
@@ -89,9 +90,10 @@ class SpaceTimePattern {
   Real sample(std::uint64_t index, unsigned dim) const noexcept {
     const std::uint64_t m = table_.order;
     const double jitter = uniform01(key_, index, dim);
+    const std::uint64_t column = index % m, row = index / m;  // the slot's place in the m x m square
     double value;
-    if (dim == 0) value = (static_cast<double>(index % m) + jitter) / static_cast<double>(m);
-    else if (dim == 1) value = (static_cast<double>(index / m) + jitter) / static_cast<double>(m);
+    if (dim == 0) value = (static_cast<double>(column) + jitter) / static_cast<double>(m);
+    else if (dim == 1) value = (static_cast<double>(row) + jitter) / static_cast<double>(m);
     else value = (static_cast<double>(table_.slots[index]) + jitter) / static_cast<double>(m * m);
     return to_unit<Real>(value < one_minus_epsilon_double ? value : one_minus_epsilon_double);
   }
