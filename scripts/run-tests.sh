@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Every test: installs what is missing, builds Release and runs ctest (the
+# Every test: installs what is missing, checks the layout of the sources
+# (.clang-format), lints the core headers (.clang-tidy) and checks that the
+# CMake files list every source, builds Release and runs ctest (the
 # CLI, MPI, report and CUDA tests) and pytest, runs the parsers' fuzz targets
 # briefly, builds the consumer example against an installed package, then
 # builds everything with AddressSanitizer + UBSan and runs the gtests and the
@@ -11,6 +13,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh --test
 jobs=$(nproc)
+
+echo "== layout (.clang-format), lint of the core headers (.clang-tidy), CMake source lists"
+bash scripts/check-format.sh
+bash scripts/check-tidy.sh
+bash scripts/check-sources.sh
 
 echo "== release build"
 bash scripts/build.sh release -DSTRATUM_UNIT_TESTS=OFF
