@@ -99,49 +99,13 @@ std::vector<CompareConfig> builtin_comparison(const std::string& name, unsigned 
 }
 
 std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned threads, std::uint64_t seed) {
-  if (!configs.is_array() || configs.empty())
-    throw invalid_argument("configs", io::json_excerpt(configs), "must be a non-empty JSON array");
-  std::vector<CompareConfig> result;
-  for (std::size_t i = 0; i < configs.size(); ++i) {
-    const auto& c = configs[i];
-    const std::string where = "configs[" + std::to_string(i) + "]";
-    if (!c.is_object()) throw invalid_argument(where, io::json_excerpt(c), "must be an object");
-    CompareConfig config{"config " + std::to_string(i), base("direct", 16, threads, seed)};
-    RenderSettings& s = config.settings;
-    for (const auto& item : c.items()) {
-      const std::string& key = item.key();
-      const auto& v = item.value();
-      auto text = [&] {
-        if (!v.is_string()) throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be a string");
-        return v.get<std::string>();
-      };
-      auto count = [&] {
-        if (!v.is_number_unsigned() || v.get<std::uint64_t>() < 1 || v.get<std::uint64_t>() > (1u << 24))
-          throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be an integer in [1, 2^24]");
-        return v.get<std::uint32_t>();
-      };
-      if (key == "label") config.label = text();
-      else if (key == "integrator") s.integrator = text();
-      else if (key == "light_strategy") s.light_strategy = text();
-      else if (key == "hemisphere") s.hemisphere = text();
-      else if (key == "sampler") s.sampler.sampler = text();
-      else if (key == "randomize") s.sampler.randomize = text();
-      else if (key == "time_pattern") s.sampler.time_pattern = text();
-      else if (key == "spp") s.sampler.spp = count();
-      else if (key == "light_samples") s.light_samples = count();
-      else if (key == "max_depth") s.max_depth = count();
-      else if (key == "pixel_centers") {
-        if (!v.is_boolean()) throw invalid_argument(where + "." + key, io::json_excerpt(v), "must be true or false");
-        s.pixel_centers = v.get<bool>();
-      } else
-        throw invalid_argument(where + "." + key, "(unknown key)",
-                               "allowed keys are label, integrator, spp, light_samples, light_strategy, hemisphere, "
-                               "sampler, randomize, time_pattern, max_depth, pixel_centers");
-    }
+  std::vector<CompareConfig> result = read_configs(configs, base("direct", 16, threads, seed));
+  for (std::size_t i = 0; i < result.size(); ++i) {
+    RenderSettings& s = result[i].settings;
     // "sampler" is a spec (docs/samplers.md); "randomize" its :RANDOMIZER part, given once.
-    set_pixel_sampler(s.sampler, where + ".sampler", s.sampler.sampler, {}, s.sampler.randomize);
+    set_pixel_sampler(s.sampler, "configs[" + std::to_string(i) + "].sampler", s.sampler.sampler, {},
+                      s.sampler.randomize);
     validate_settings(s);
-    result.push_back(std::move(config));
   }
   return result;
 }

@@ -63,6 +63,12 @@ std::vector<CompareConfig> builtin_comparison(const std::string& name, unsigned 
 /// "sampler": ..., "randomize": ..., "time_pattern": ..., "max_depth": ...}, ...]
 std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned threads, std::uint64_t seed);
 
+/// The configurations' fields (keys, JSON types, ranges) read over
+/// `defaults`, without the checks that need the registry, which
+/// parse_configs adds (the sampler spec, validate_settings): what the fuzz
+/// target reaches. Throws invalid_argument naming configs[i].KEY.
+std::vector<CompareConfig> read_configs(const nlohmann::json& configs, const RenderSettings& defaults);
+
 /// Sets the pixel sampler's name and randomizer from a sampler spec
 /// (docs/samplers.md) with -p items and a separate randomizer folded in
 /// (combine_sampler_options); `argument` names the spec in errors. The pixel
