@@ -74,17 +74,12 @@ void run_integrate(const IntegrateOptions& o) {
   request.seed = o.sampler.seed;
   request.threads = static_cast<unsigned>(o.threads);
   request.confidence = o.confidence;
-  const bool to_tolerance = o.abs_tol || o.rel_tol;
-  if (o.max_n && !to_tolerance)
-    throw invalid_argument("max-n", std::to_string(*o.max_n), "applies with --abs-tol or --rel-tol");
   require(!o.max_n || *o.max_n >= 1, "max-n", o.max_n.value_or(0), "must be a positive integer");
-  sa::ToleranceResult tolerance;
-  if (to_tolerance) {
-    sa::ToleranceRequest tolerance_request{request, o.abs_tol.value_or(0), o.rel_tol.value_or(0)};
-    if (o.max_n) tolerance_request.max_n = static_cast<std::uint64_t>(*o.max_n);
-    tolerance = sa::integrate_to_tolerance(tolerance_request);
-  }
-  const sa::IntegrationResult r = to_tolerance ? tolerance.result : sa::integrate(request);
+  sa::ToleranceOptions options{o.abs_tol, o.rel_tol, {}};
+  if (o.max_n) options.max_n = static_cast<std::uint64_t>(*o.max_n);
+  const bool to_tolerance = options.any();
+  const sa::ToleranceResult tolerance = sa::integrate_with(request, options);
+  const sa::IntegrationResult& r = tolerance.result;
   nlohmann::json steps = nlohmann::json::array();
   std::string step_counts;
   for (const auto& step : tolerance.steps) {

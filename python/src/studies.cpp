@@ -59,22 +59,14 @@ py::dict integrate(const std::string& integrand, unsigned d, const sa::Integrand
   request.seed = seed;
   request.threads = threads;
   request.confidence = confidence;
-  const bool to_tolerance = abs_tol || rel_tol;
-  if (max_n && !to_tolerance)
-    throw invalid_argument("max_n", std::to_string(*max_n), "applies with abs_tol or rel_tol");
-  sa::IntegrationResult r;
+  const sa::ToleranceOptions options{abs_tol, rel_tol, max_n};
+  const bool to_tolerance = options.any();
   sa::ToleranceResult tolerance;
   {
     InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
-    if (to_tolerance) {
-      sa::ToleranceRequest tolerance_request{request, abs_tol.value_or(0), rel_tol.value_or(0)};
-      if (max_n) tolerance_request.max_n = *max_n;
-      tolerance = sa::integrate_to_tolerance(tolerance_request);
-      r = tolerance.result;
-    } else {
-      r = sa::integrate(request);
-    }
+    tolerance = sa::integrate_with(request, options);
   }
+  const sa::IntegrationResult& r = tolerance.result;
   py::dict out(py::arg("integrand") = r.integrand, py::arg("sampler") = r.sampler, py::arg("randomize") = r.randomize,
                py::arg("d") = r.d, py::arg("n") = r.n, py::arg("runs") = r.runs, py::arg("estimate") = r.estimate,
                py::arg("standard_error") = r.standard_error, py::arg("standard_error_kind") = r.standard_error_kind,

@@ -197,7 +197,7 @@ def test_integrate_to_a_tolerance():
     ({"abs_tol": 0}, "give --abs-tol or --rel-tol greater than 0"),
     ({"abs_tol": "1e-3"}, "invalid abs_tol = '1e-3': must be a real number"),
     ({"rel_tol": 1.5}, r"invalid rel-tol = 1.5: must be a real in \[0, 1\)"),
-    ({"max_n": 64}, "invalid max_n = 64: applies with abs_tol or rel_tol"),
+    ({"max_n": 64}, "invalid max-n = 64: applies only with a tolerance, abs-tol or rel-tol"),
     ({"abs_tol": 1e-3, "max_n": 8}, "invalid max-n = 8: must be at least n = 16"),
 ])
 def test_integrate_tolerance_refusals(kwargs, match):

@@ -68,4 +68,18 @@ ToleranceResult integrate_to_tolerance(const ToleranceRequest& request) {
   }
 }
 
+ToleranceResult integrate_with(const IntegrationRequest& request, const ToleranceOptions& tolerance) {
+  if (!tolerance.any()) {
+    if (tolerance.max_n)
+      throw invalid_argument("max-n", std::to_string(*tolerance.max_n),
+                             "applies only with a tolerance, abs-tol or rel-tol");
+    ToleranceResult out;
+    out.result = integrate(request);
+    return out;
+  }
+  ToleranceRequest to_tolerance{request, tolerance.abs_tol.value_or(0), tolerance.rel_tol.value_or(0)};
+  if (tolerance.max_n) to_tolerance.max_n = *tolerance.max_n;
+  return integrate_to_tolerance(to_tolerance);
+}
+
 }  // namespace stratum::analysis

@@ -69,6 +69,24 @@ TEST(IntegrateToTolerance, MaxNEndsTheDoublingUnmet) {
   EXPECT_EQ(integrate_to_tolerance(request).steps.size(), 5u);
 }
 
+TEST(IntegrateToTolerance, EveryFaceGoesThroughIntegrateWith) {
+  const ToleranceRequest request = gaussian_request("random", 2, 4, 1e-3);
+  // No tolerance: integrate() alone, no steps.
+  const ToleranceResult plain = integrate_with(request.integration, {});
+  EXPECT_TRUE(plain.steps.empty());
+  EXPECT_EQ(plain.result.estimate, integrate(request.integration).estimate);
+  EXPECT_EQ(plain.result.n, 16u);
+  // A tolerance: integrate_to_tolerance, max_n included.
+  const ToleranceResult doubled = integrate_with(request.integration, {1e-9, {}, 64});
+  EXPECT_EQ(doubled.steps.size(), 3u);  // 16, 32, 64
+  EXPECT_FALSE(doubled.met);
+  // max_n alone would be ignored: refused.
+  EXPECT_EQ(error_of([&] {
+              integrate_with(request.integration, {{}, {}, 64});
+            }),
+            "invalid max-n = 64: applies only with a tolerance, abs-tol or rel-tol");
+}
+
 TEST(IntegrateToTolerance, RefusalsComeFirst) {
   ToleranceRequest request = gaussian_request("random", 0, 4, 0);
   EXPECT_EQ(error_of([&] { integrate_to_tolerance(request); }),

@@ -128,7 +128,7 @@ PY
 "$stratum" integrate --integrand gaussian -s random -n 16 --runs 4 --abs-tol 1e-9 --max-n 64 | grep -q "NOT met (max-n reached).*n = 16, 32, 64" && ok || fail "tolerance not met at max-n"
 expect_error "invalid abs-tol = 0: give --abs-tol or --rel-tol" integrate --integrand gaussian -n 16 --runs 4 --abs-tol 0
 expect_error "invalid rel-tol = 1" integrate --integrand gaussian -n 16 --runs 4 --rel-tol 1
-expect_error "invalid max-n = 64: applies with --abs-tol" integrate --integrand gaussian -n 16 --runs 4 --max-n 64
+expect_error "invalid max-n = 64: applies only with a tolerance, abs-tol or rel-tol" integrate --integrand gaussian -n 16 --runs 4 --max-n 64
 expect_error "which grid refuses" integrate --integrand gaussian -s grid:cp -n 16 --runs 4 --abs-tol 1e-3
 expect_error "gives no error estimate" integrate --integrand gaussian -s sobol:none -n 16 --runs 4 --abs-tol 1e-3
 finish

@@ -14,6 +14,7 @@
 /// mostly with few runs; more runs (16 or more) make the variance estimate
 /// steady and the shortfall small (measured in the tests and the docs).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "stratum/analysis/convergence.hpp"
@@ -44,5 +45,19 @@ struct ToleranceResult {
 /// then integrates step by step. A step without an error estimate
 /// (identical runs: a deterministic sampler) is an error naming the sampler.
 ToleranceResult integrate_to_tolerance(const ToleranceRequest& request);
+
+/// The tolerance options of `integrate` on every face: none given, or abs
+/// and rel tolerances with an optional max_n.
+struct ToleranceOptions {
+  std::optional<double> abs_tol, rel_tol;
+  std::optional<std::uint64_t> max_n;  ///< default ToleranceRequest's
+  bool any() const noexcept { return abs_tol || rel_tol; }
+};
+
+/// What `integrate` does on every face: integrate(request) when no
+/// tolerance is given (the result alone, no steps), else
+/// integrate_to_tolerance; a max_n without a tolerance is refused (it
+/// would be ignored).
+ToleranceResult integrate_with(const IntegrationRequest& request, const ToleranceOptions& tolerance);
 
 }  // namespace stratum::analysis
