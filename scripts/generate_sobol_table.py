@@ -91,6 +91,8 @@ def render(counts, words, source_name, digest):
         "// Decoded by stratum/sequences/sobol_directions.hpp.",
         "#include <cstdint>",
         "",
+        "// The generator's layout (six words a line), not .clang-format's:",
+        "// clang-format off",
         "namespace stratum::sobol_joe_kuo {",
         "",
         f"inline constexpr unsigned dimensions = {sum(counts)};",
@@ -101,7 +103,7 @@ def render(counts, words, source_name, digest):
     ]
     for start in range(0, len(words), 6):
         lines.append("    " + ", ".join(f"0x{w:016x}" for w in words[start:start + 6]) + ",")
-    lines += ["};", "", "}  // namespace stratum::sobol_joe_kuo", ""]
+    lines += ["};", "", "}  // namespace stratum::sobol_joe_kuo", "// clang-format on", ""]
     return "\n".join(lines)
 
 

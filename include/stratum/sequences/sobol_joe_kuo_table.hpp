@@ -7,6 +7,8 @@
 // Decoded by stratum/sequences/sobol_directions.hpp.
 #include <cstdint>
 
+// The generator's layout (six words a line), not .clang-format's:
+// clang-format off
 namespace stratum::sobol_joe_kuo {
 
 inline constexpr unsigned dimensions = 21201;
@@ -8218,3 +8220,4 @@ inline constexpr std::uint64_t packed[49204] = {
 };
 
 }  // namespace stratum::sobol_joe_kuo
+// clang-format on
