@@ -4,7 +4,6 @@
 #ifdef STRATUM_HAS_RENDER
 #include <fmt/core.h>
 
-#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -87,10 +86,8 @@ void run_compare(CompareCommand& o) {
       if (o.repeats > 1) {  // the statistics over the repeats (docs/render.md)
         const std::size_t c = out.size() - 1;
         const render::RepeatedStatistics& st = repeated.statistics[c];
-        std::vector<double> mse, seconds;
-        for (const auto& repeat : repeated.rows) mse.push_back(repeat[c].mse), seconds.push_back(repeat[c].seconds);
-        row["mse_per_seed"] = mse;
-        row["seconds_per_seed"] = seconds;
+        row["mse_per_seed"] = repeated.mse[c];
+        row["seconds_per_seed"] = repeated.seconds[c];
         row["mse_standard_error"] = st.mse.standard_error;
         row["mse_ratio_interval"] = interval(st.mse_ratio);
         row["time_ratio"] = st.time_ratio.estimate;
@@ -126,13 +123,12 @@ void run_compare(CompareCommand& o) {
     };
     for (std::size_t c = 0; c < rows.size(); ++c) {
       const render::RepeatedStatistics& st = repeated.statistics[c];
-      const double noise = 100 * std::max(std::abs(st.time_ratio.high - 1), std::abs(1 - st.time_ratio.low));
       fmt::print("{:18} {:>22} {:>24} {:>24} {:>24}\n", rows[c].label,
                  fmt::format("{:.4e} ± {:.2e}", st.mse.mean, st.mse.standard_error), ratio(st.mse_ratio),
                  ratio(st.time_ratio),
                  c == 0             ? std::string("1 (baseline)")
                  : st.time_resolved ? ratio(st.efficiency_ratio)
-                                    : fmt::format("times equal ±{:.2g}%", noise));
+                                    : fmt::format("times equal ±{:.2g}%", analysis::noise_percent(st.time_ratio)));
     }
     fmt::print(
         "({} seeds, every configuration rendered with each (paired): MSE and relMSE are means, seconds medians, "

@@ -85,10 +85,8 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
         py::dict(py::arg("frequency") = r.error_radial_frequency, py::arg("power") = r.error_radial_power);
     if (repeats > 1) {  // the statistics over the repeats, as `stratum compare --repeats --json`
       const render::RepeatedStatistics& st = repeated.statistics[c];
-      std::vector<double> mse, seconds;
-      for (const auto& each : repeated.rows) mse.push_back(each[c].mse), seconds.push_back(each[c].seconds);
-      row["mse_per_seed"] = mse;
-      row["seconds_per_seed"] = seconds;
+      row["mse_per_seed"] = repeated.mse[c];
+      row["seconds_per_seed"] = repeated.seconds[c];
       row["mse_standard_error"] = st.mse.standard_error;
       row["mse_ratio_interval"] = interval(st.mse_ratio);
       row["time_ratio"] = st.time_ratio.estimate;

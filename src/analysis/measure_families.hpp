@@ -1,17 +1,17 @@
 #pragma once
 /// The measure registry's families, one source file each.
-#include <algorithm>
 #include <cstddef>
-#include <thread>
 #include <vector>
 
 #include "stratum/analysis/measures.hpp"
+#include "stratum/registry/spec.hpp"
 
 namespace stratum::analysis::measure_families {
-/// Workers a measure's parallel loop runs at once (threads 0: every core):
-/// the count of per-worker scratch buffers its working_bytes allows for.
+/// Workers a measure's parallel loop runs at once (threads 0: every core,
+/// as resolve_threads counts them): the count of per-worker scratch
+/// buffers its working_bytes allows for.
 inline double concurrent_workers(unsigned threads) {
-  return threads != 0 ? double(threads) : double(std::max(1u, std::thread::hardware_concurrency()));
+  return threads != 0 ? double(threads) : double(resolve_threads(0));
 }
 
 std::vector<MeasureInfo> l2();        // measures_l2.cpp: l2-star, cd, wd, md

@@ -35,6 +35,10 @@ RatioInterval paired_ratio_interval(const std::vector<double>& numerator, const 
   return interval;
 }
 
+double noise_percent(const RatioInterval& interval) {
+  return 100 * std::max(std::abs(interval.high - 1), std::abs(1 - interval.low));
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(values.begin(), values.end());

@@ -41,7 +41,8 @@ RepeatedCompare compare_repeated(const Scene& scene, const std::string& scene_ke
   RepeatedCompare result;
   result.repeats = repeats;
   result.confidence = confidence;
-  std::vector<std::vector<double>> mse(configs.size()), seconds(configs.size());
+  result.mse.resize(configs.size());
+  result.seconds.resize(configs.size());
   for (unsigned k = 0; k < repeats; ++k) {
     std::vector<CompareConfig> seeded = configs;
     if (k > 0)  // every configuration of a repeat shares its seed: paired comparisons
@@ -49,12 +50,12 @@ RepeatedCompare compare_repeated(const Scene& scene, const std::string& scene_ke
     CompareImages pictures;
     result.rows.push_back(compare(scene, scene_key, seeded, options, images ? &pictures : nullptr));
     for (std::size_t c = 0; c < configs.size(); ++c) {
-      mse[c].push_back(result.rows.back()[c].mse);
-      seconds[c].push_back(result.rows.back()[c].seconds);
+      result.mse[c].push_back(result.rows.back()[c].mse);
+      result.seconds[c].push_back(result.rows.back()[c].seconds);
     }
     if (images) images->push_back(std::move(pictures));
   }
-  result.statistics = repeated_statistics(mse, seconds, confidence);
+  result.statistics = repeated_statistics(result.mse, result.seconds, confidence);
   result.summary = result.rows.front();
   if (repeats > 1)
     for (std::size_t c = 0; c < configs.size(); ++c) {

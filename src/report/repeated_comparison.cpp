@@ -19,16 +19,13 @@ RepeatedComparison run_repeated_comparison(const render::ComparisonScene& scene,
   result.repeats = repeats;
   result.reference_spp = options.reference_spp;
   result.equal_time = options.equal_time;
-  result.mse.resize(configs.size());
-  result.seconds.resize(configs.size());
+  result.mse = std::move(repeated.mse);
+  result.seconds = std::move(repeated.seconds);
   result.samples.resize(configs.size());
   for (const auto& config : configs) result.labels.push_back(config.label);
   for (unsigned k = 0; k < repeats; ++k) {
     for (std::size_t c = 0; c < configs.size(); ++c) {
-      const render::CompareRow& row = repeated.rows[k][c];
-      result.mse[c].push_back(row.mse);
-      result.seconds[c].push_back(row.seconds);
-      result.samples[c].push_back(row.samples);
+      result.samples[c].push_back(repeated.rows[k][c].samples);
     }
     result.reference_cached = result.reference_cached && pictures[k].reference_cached;
     if (k == 0) result.reference = std::move(pictures[k].reference);

@@ -20,8 +20,4 @@ std::string format_factor(const RatioInterval& interval) {
   return fmt::format("{}× ({:g}% CI {}–{})", text.estimate, 100 * interval.confidence, text.low, text.high);
 }
 
-double noise_percent(const RatioInterval& interval) {
-  return 100 * std::max(std::abs(interval.high - 1), std::abs(1 - interval.low));
-}
-
 }  // namespace stratum::report

@@ -10,6 +10,7 @@ namespace stratum::report {
 using analysis::mean_and_error;
 using analysis::MeanError;
 using analysis::median;
+using analysis::noise_percent;
 using analysis::paired_ratio_interval;
 using analysis::RatioInterval;
 
@@ -18,9 +19,5 @@ std::string format_interval(const RatioInterval& interval);
 
 /// "15.8× (95% CI 15.6–16.0)": the same as a factor, for running text.
 std::string format_factor(const RatioInterval& interval);
-
-/// The half-width of a ratio interval around 1, as a percentage: how far
-/// apart two timings may be and still be called equal ("±7%").
-double noise_percent(const RatioInterval& interval);
 
 }  // namespace stratum::report

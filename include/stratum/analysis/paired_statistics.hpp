@@ -24,6 +24,10 @@ struct RatioInterval {
 RatioInterval paired_ratio_interval(const std::vector<double>& numerator, const std::vector<double>& denominator,
                                     double confidence = 0.95);
 
+/// The half-width of a ratio interval around 1, as a percentage: how far
+/// apart two timings may be and still be called equal ("±7%").
+double noise_percent(const RatioInterval& interval);
+
 /// The median (mean of the middle two for an even count); NaN when empty.
 double median(std::vector<double> values);
 

@@ -35,8 +35,9 @@ std::vector<RepeatedStatistics> repeated_statistics(const std::vector<std::vecto
                                                     double confidence = 0.95);
 
 struct RepeatedCompare {
-  std::vector<std::vector<CompareRow>> rows;   ///< [repeat][configuration]
-  std::vector<RepeatedStatistics> statistics;  ///< [configuration]
+  std::vector<std::vector<CompareRow>> rows;      ///< [repeat][configuration]
+  std::vector<std::vector<double>> mse, seconds;  ///< the rows' MSE and seconds, [configuration][repeat]
+  std::vector<RepeatedStatistics> statistics;     ///< [configuration]
   /// What the faces print, one row per configuration: the first repeat's
   /// row (its spp, passes, variance image and error spectrum) with MSE and
   /// relative MSE the means over the repeats, seconds the median,
