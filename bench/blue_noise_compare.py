@@ -34,7 +34,7 @@ def main():
     print("|---:|---|---:|---:|---:|---:|---:|")
     for spp in (1, 4, 16):
         base_seconds = None
-        for name in ("sobol", "random", "zsobol", "sobol-bn"):
+        for name in ("sobol", "random", "zsobol", "sobol-bn", "pmj02-bn", "lattice-bn"):
             low, mse, blurred, seconds = [], [], [], []
             for seed in range(seeds):
                 start = time.perf_counter()

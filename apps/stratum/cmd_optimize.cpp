@@ -1,6 +1,7 @@
-/// `stratum optimize blue-noise`: sobol-bn's rank tile (analysis/blue_noise.hpp),
-/// written as a rank file (sequences/sobol_bn.hpp) that `--param table=FILE`
-/// reads; the committed default was made by this command (docs/blue-noise.md).
+/// `stratum optimize blue-noise`: the rank tile of sobol-bn, pmj02-bn or
+/// lattice-bn (analysis/blue_noise.hpp),
+/// written as a rank file (sequences/ranked_blue_noise.hpp) that `--param table=FILE`
+/// reads; the committed defaults were made by this command (docs/blue-noise.md).
 #include <fmt/core.h>
 
 #include <chrono>
@@ -18,6 +19,7 @@ namespace {
 struct OptimizeOptions {
   std::int64_t size = 128, dims = 8, max_spp = 16, integrands = 32, sweeps = 256;
   std::uint64_t seed = default_seed;
+  std::string base = "sobol";
   std::string output;
   bool quiet = false;
 };
@@ -29,6 +31,7 @@ std::uint32_t bounded(std::int64_t v, const char* name) {
 
 void run_blue_noise(const OptimizeOptions& o) {
   analysis::BlueNoiseOptions options;
+  options.base = blue_noise_base_from(o.base, "base");
   options.size = bounded(o.size, "size");
   options.dims = bounded(o.dims, "dims");
   options.max_spp = bounded(o.max_spp, "max-spp");
@@ -49,10 +52,10 @@ void run_blue_noise(const OptimizeOptions& o) {
   file.write([&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
   file.commit();
   fmt::print(
-      "# blue-noise rank tile {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes in {:.1f} "
-      "s\n",
-      table.size, table.size, table.dims, table.seed, table.max_spp, table.integrands, table.sweeps, bytes.size(),
-      seconds);
+      "# blue-noise rank tile of {} {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes "
+      "in {:.1f} s\n",
+      blue_noise_base_name(table.base), table.size, table.size, table.dims, table.seed, table.max_spp, table.integrands,
+      table.sweeps, bytes.size(), seconds);
   fmt::print("# energy: blurred error over the test integrands, white = 1\n");
   fmt::print("# {:>4} {:>10} {:>10} {:>10}\n", "pair", "initial", "final", "accepted");
   for (std::size_t p = 0; p < report.size(); ++p)
@@ -64,16 +67,22 @@ void run_blue_noise(const OptimizeOptions& o) {
 }  // namespace
 
 void add_optimize_command(CLI::App& app) {
-  auto* optimize = app.add_subcommand("optimize", "Generate optimized tables: blue-noise (sobol-bn's rank tile)");
+  auto* optimize = app.add_subcommand(
+      "optimize", "Generate optimized tables: blue-noise (the rank tiles of sobol-bn, pmj02-bn, lattice-bn)");
   optimize->require_subcommand(1);
   auto o = std::make_shared<OptimizeOptions>();
   auto* command = optimize->add_subcommand(
       "blue-noise",
-      "sobol-bn's per-pixel ranks (which block of the shared Owen-scrambled Sobol' sequence a pixel takes), swapped "
+      "the per-pixel ranks of sobol-bn, pmj02-bn or lattice-bn (which block of the shared randomized base sequence a "
+      "pixel takes), swapped "
       "between pixels so that the blurred error of test heavisides is "
       "small (Heitz et al. 2019; Belcour & Heitz 2021); deterministic: the same options give the same bytes");
+  command
+      ->add_option("--base", o->base, "the base sequence: sobol, pmj02 or lattice (for sobol-bn, pmj02-bn, lattice-bn)")
+      ->capture_default_str();
   command->add_option("--size", o->size, "tile side in pixels, a power of 2 in [16, 256]")->capture_default_str();
-  command->add_option("--dims", o->dims, "dimensions covered (even, [2, 64]; pairs optimized one by one)")
+  command
+      ->add_option("--dims", o->dims, "dimensions covered (even, [2, 64], lattice [2, 32]; pairs optimized one by one)")
       ->capture_default_str();
   add_seed_option(*command, o->seed, "seed of the ranks, test integrands and swaps");
   command->add_option("--max-spp", o->max_spp, "optimize for spp = 1, 2, 4, ..., this (a power of 2, <= 256)")

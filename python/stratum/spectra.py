@@ -78,18 +78,22 @@ def _count(name, value, low, high):
 
 
 def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 0, max_spp: int = 16, integrands: int = 32,
-                        sweeps: int = 256, output=None) -> dict:
-    """sobol-bn's key tile (docs/blue-noise.md), as ``stratum optimize
-    blue-noise``: per-pixel ranks (which block of the shared Owen-scrambled
-    Sobol' sequence a pixel takes) swapped between pixels so that the
+                        sweeps: int = 256, output=None, base: str = "sobol") -> dict:
+    """The rank tile of sobol-bn, pmj02-bn or lattice-bn (``base`` "sobol",
+    "pmj02" or "lattice"; docs/blue-noise.md), as ``stratum optimize
+    blue-noise``: per-pixel ranks (which block of the shared randomized base
+    sequence a pixel takes) swapped between pixels so that the
     blurred error of test heavisides at spp = 1, 2, ..., max_spp is small.
     Deterministic: the same arguments give the same bytes as the CLI. Returns
     ``ranks`` (uint16 array (size, size, dims // 2)), ``bytes`` (the file) and
     ``pairs`` (per dimension pair: initial and final energy, white = 1, and
     the swaps accepted and proposed); with ``output`` the file is written
     there (whole or not at all), for ``stratum.points("sobol-bn", ...,
-    table=output)``."""
+    table=output)`` (or pmj02-bn, lattice-bn)."""
+    if not isinstance(base, str):
+        raise InvalidArgument(f"invalid base = {base!r}: allowed: sobol, pmj02, lattice")
     data, pairs = _stratum._optimize_blue_noise(
+        base,
         _count("size", size, 0, 1 << 20), _count("dims", dims, 0, 1 << 20),
         _count("seed", seed, 0, (1 << 64) - 1), _count("max_spp", max_spp, 0, 1 << 20),
         _count("integrands", integrands, 0, 1 << 20), _count("sweeps", sweeps, 0, 1 << 20))
@@ -107,7 +111,7 @@ def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 0, max_spp: 
             if os.path.exists(staging):
                 os.remove(staging)
             raise
-    ranks = np.frombuffer(data, dtype="<u2", offset=36).reshape(size, size, dims // 2)
+    ranks = np.frombuffer(data, dtype="<u2", offset=40).reshape(size, size, dims // 2)
     return {"ranks": ranks, "bytes": data, "pairs": pairs}
 
 

@@ -9,8 +9,6 @@
 #include <string>
 
 #include "stratum/memory.hpp"
-#include "stratum/randomizers/base2.hpp"
-#include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
 #include "stratum/util/interrupt.hpp"
@@ -45,20 +43,15 @@ struct Kernel {
 
 /// A test integrand: the heaviside [n · (x − c) > 0] of a random centre c in
 /// the square and an isotropic random normal n (drawn in the unit disc, so
-/// no trigonometry), with its own Owen scramble of the shared sequence.
+/// no trigonometry), with its own randomization keys of the shared sequence.
 struct Heaviside {
   double cx, cy, nx, ny;
-  HashOwenScrambler::Dimension sx{0}, sy{0};
+  std::uint64_t kx, ky;
 };
 
 Heaviside make_heaviside(std::uint64_t seed, std::uint32_t pair, std::uint32_t level, std::uint32_t t) {
   const std::uint64_t key = hash64(seed, tag_integrand, pair, level, t);
-  Heaviside h{bits_to_double(hash64(key, 0)),
-              bits_to_double(hash64(key, 1)),
-              0,
-              0,
-              HashOwenScrambler::Dimension(hash64(key, 2)),
-              HashOwenScrambler::Dimension(hash64(key, 3))};
+  Heaviside h{bits_to_double(hash64(key, 0)), bits_to_double(hash64(key, 1)), 0, 0, hash64(key, 2), hash64(key, 3)};
   for (std::uint64_t attempt = 0;; ++attempt) {
     const double x = 2 * bits_to_double(hash64(key, 4, attempt)) - 1,
                  y = 2 * bits_to_double(hash64(key, 5, attempt)) - 1;
@@ -90,7 +83,7 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
 
   // e[p·m + c]: the error of pixel p's key on column c = level·T + t.
   std::vector<double> e(n * m), conv(n * m, 0.0);
-  const Sobol sobol(2);
+  const RankedBase base(o.base);
   for (unsigned level = 0; level < levels; ++level) {
     const std::uint32_t spp = 1u << level;
     for (std::uint32_t t = 0; t < o.integrands; ++t) {
@@ -102,8 +95,8 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
         std::uint32_t inside = 0;
         for (std::uint32_t i = 0; i < spp; ++i) {
           const std::uint64_t index = std::uint64_t{ranks[p]} * spp + i;
-          const double x = bits_to_double(reverse_bits64(h.sx.scramble_reversed(sobol.reversed_bits(index, 0))));
-          const double y = bits_to_double(reverse_bits64(h.sy.scramble_reversed(sobol.reversed_bits(index, 1))));
+          const std::array<std::uint64_t, 2> bits = base.bits(pair, index, h.kx, h.ky);
+          const double x = bits_to_double(bits[0]), y = bits_to_double(bits[1]);
           inside += h.nx * (x - h.cx) + h.ny * (y - h.cy) > 0;
         }
         e[p * m + c] = double(inside) / double(spp);
@@ -199,7 +192,10 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
 void check_blue_noise_options(const BlueNoiseOptions& o) {
   require(o.size >= 16 && o.size <= 256 && std::has_single_bit(o.size), "size", o.size,
           "must be a power of 2 in [16, 256] (the tile's side in pixels)");
-  require(o.dims >= 2 && o.dims <= 64 && o.dims % 2 == 0, "dims", o.dims, "must be an even integer in [2, 64]");
+  const std::uint32_t max_dims = blue_noise_max_dims(o.base);
+  require(
+      o.dims >= 2 && o.dims <= max_dims && o.dims % 2 == 0, "dims", o.dims,
+      "must be an even integer in [2, " + std::to_string(max_dims) + "] (base " + blue_noise_base_name(o.base) + ")");
   require(o.max_spp >= 1 && o.max_spp <= 256 && std::has_single_bit(o.max_spp), "max-spp", o.max_spp,
           "must be a power of 2 in [1, 256]");
   require(o.integrands >= 1 && o.integrands <= 1024, "integrands", o.integrands, "must be an integer in [1, 1024]");
@@ -212,8 +208,8 @@ BlueNoiseTable optimize_blue_noise(const BlueNoiseOptions& o, std::vector<BlueNo
   const std::size_t n = std::size_t{o.size} * o.size;
   const unsigned levels = static_cast<unsigned>(std::countr_zero(o.max_spp)) + 1;
   require_memory(2 * n * levels * o.integrands * sizeof(double), "the optimizer's error images");
-  BlueNoiseTable table{
-      o.size, o.dims, o.max_spp, o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * (o.dims / 2))};
+  BlueNoiseTable table{o.base,       o.size,   o.dims, o.max_spp,
+                       o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * (o.dims / 2))};
   const std::uint32_t pairs = o.dims / 2;
   if (report) report->assign(pairs, {});
   for (std::uint32_t pair = 0; pair < pairs; ++pair) {

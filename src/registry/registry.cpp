@@ -30,7 +30,8 @@ const std::vector<SamplerInfo>& samplers() {
   static const std::vector<SamplerInfo> all = [] {
     std::vector<SamplerInfo> list;
     namespace f = registry_families;
-    for (auto family : {f::sequences, f::sobol, f::pmj, f::lattices, f::patterns, f::poisson, f::spacetime}) {
+    for (auto family :
+         {f::sequences, f::sobol, f::pmj, f::lattices, f::patterns, f::poisson, f::blue_noise, f::spacetime}) {
       auto part = family();
       list.insert(list.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
     }

@@ -16,9 +16,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -31,7 +28,6 @@
 #include "stratum/randomizers/base2.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/sequences/sobol.hpp"
-#include "stratum/sequences/sobol_bn.hpp"
 #include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/real.hpp"
@@ -444,35 +440,6 @@ PointSet generate_zsobol(const SamplerRequest& request) {
   });
 }
 
-/// sobol-bn's key tile: the committed default, or the `table` file.
-std::shared_ptr<const BlueNoiseTable> sobol_bn_table(const SamplerRequest& request) {
-  if (!request.values.has("table") || request.values.text("table").empty())
-    return {std::shared_ptr<const BlueNoiseTable>{}, &default_blue_noise_table()};
-  const std::string& path = request.values.text("table");
-  std::ifstream in(path, std::ios::binary);
-  require(in.good(), "table", path, "cannot be read (give a file written by stratum optimize blue-noise)");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return std::make_shared<const BlueNoiseTable>(parse_blue_noise_table(bytes, path));
-}
-
-std::array<std::uint32_t, 2> sobol_bn_pixel(const SamplerRequest& request) {
-  const std::vector<std::int64_t>& pixel = request.values.integers("pixel");
-  for (std::int64_t c : pixel)
-    require(c >= 0 && c <= 0xffffffffLL, "pixel", std::to_string(pixel[0]) + "," + std::to_string(pixel[1]),
-            "coordinates must be in [0, 2^32)");
-  return {static_cast<std::uint32_t>(pixel[0]), static_cast<std::uint32_t>(pixel[1])};
-}
-
-PointSet generate_sobol_bn(const SamplerRequest& request) {
-  const auto table = sobol_bn_table(request);
-  const auto [x, y] = sobol_bn_pixel(request);
-  const SobolBn sampler(*table, *request.n, request.seed);
-  std::vector<SobolBn::PixelPair> pairs;
-  for (unsigned p = 0; p < (request.d + 1) / 2; ++p) pairs.push_back(sampler.pixel_pair(x, y, p));
-  return fill_index_addressable(*request.n, request.d, request.threads,
-                                [&](std::uint64_t i, unsigned j) { return sampler.point(i, pairs[j / 2])[j % 2]; });
-}
-
 }  // namespace
 
 std::vector<SamplerInfo> sobol() {
@@ -513,34 +480,6 @@ std::vector<SamplerInfo> sobol() {
       .validate = [](const SamplerRequest& request) { zsobol_from(request); },
       .count = requested_count,
       .generate = generate_zsobol,
-  });
-
-  list.push_back({
-      .name = "sobol-bn",
-      .kind = "pattern",
-      .description =
-          "the spp samples of one pixel of a blue-noise-error image sampler (after Heitz et al. 2019, "
-          "Belcour & Heitz 2021): one Owen-scrambled Sobol' sequence per dimension pair shared by the image, "
-          "each pixel taking the block of spp points its rank in an optimized tile names (stratum optimize "
-          "blue-noise; after the tile's dimensions, per-pixel Owen scrambles); render --sampler sobol-bn "
-          "uses it per pixel",
-      .min_dim = 1,
-      .max_dim = 64,
-      .properties = {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
-                     "blue-noise error across pixels (the tile's dimensions)"},
-      .randomizers = {"owen-hash"},
-      .counts = "n = spp, 1 to 2^24 (powers of two give (0,m,2)-nets per pair)",
-      .params = {params::integers("pixel", "the pixel x,y whose samples these are", "0,0", at_least(0), {2, 2}),
-                 params::text("table",
-                              "a rank tile written by stratum optimize blue-noise (default: the committed tile)", "")},
-      .validate =
-          [](const SamplerRequest& request) {
-            const auto table = sobol_bn_table(request);
-            sobol_bn_pixel(request);
-            SobolBn(*table, *request.n, request.seed);  // checks n
-          },
-      .count = requested_count,
-      .generate = generate_sobol_bn,
   });
 
   list.push_back({

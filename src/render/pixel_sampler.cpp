@@ -75,7 +75,9 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
     for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
   if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, seed_);
-  if (name == "sobol-bn") sobol_bn_.emplace(default_blue_noise_table(), settings_.spp, seed_);
+  for (BlueNoiseBase base : {BlueNoiseBase::sobol, BlueNoiseBase::pmj02, BlueNoiseBase::lattice})
+    if (name == std::string(blue_noise_base_name(base)) + "-bn")
+      ranked_bn_.emplace(default_blue_noise_table(base), settings_.spp, seed_);
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
@@ -86,7 +88,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
   seed_ = other.seed_, offset_ = other.offset_;
   zsobol_ = other.zsobol_, zsobol_pairs_ = other.zsobol_pairs_;
-  sobol_bn_ = other.sobol_bn_, sobol_bn_shared_ = other.sobol_bn_shared_;
+  ranked_bn_ = other.ranked_bn_, ranked_bn_shared_ = other.ranked_bn_shared_;
 }
 
 void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set,
@@ -225,9 +227,9 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
     const std::uint64_t sequence = zsobol_index(dimension);  // before the pair: it may add the pair
     return zsobol_->point(sequence, zsobol_pairs_[dimension]);
   }
-  if (sobol_bn_) {
+  if (ranked_bn_) {
     const std::uint32_t dimension = dimension_++;
-    return sobol_bn_->point(index_, sobol_bn_pair(dimension));
+    return ranked_bn_->point(index_, ranked_bn_pair(dimension));
   }
   if (halton_direct_) {
     const std::uint32_t dimension = dimension_++;
@@ -249,9 +251,9 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = zsobol_->array_point(sequence, k, i, zsobol_pairs_[dimension]);
     return;
   }
-  if (sobol_bn_) {  // the pixel's arrays together are its block of spp · n points
-    const SobolBn::PixelPair& pair = sobol_bn_pair(dimension);
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = sobol_bn_->array_point(index_, n, i, pair);
+  if (ranked_bn_) {  // the pixel's arrays together are its block of spp · n points
+    const RankedBlueNoise::PixelPair& pair = ranked_bn_pair(dimension);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = ranked_bn_->array_point(index_, n, i, pair);
     return;
   }
   if (halton_permute_ && n <= halton_direct_max) {

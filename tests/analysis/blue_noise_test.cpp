@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "stratum/analysis/image_spectrum.hpp"
-#include "stratum/sequences/sobol_bn.hpp"
+#include "stratum/sequences/ranked_blue_noise.hpp"
 
 namespace {
 
@@ -87,7 +87,7 @@ Measured heaviside_image_power(std::uint32_t pair, std::uint32_t spp, int seeds)
   const int w = 128;
   std::vector<double> powers;
   for (int seed = 0; seed < seeds; ++seed) {
-    const stratum::SobolBn z(stratum::default_blue_noise_table(), spp, 100 + std::uint64_t(seed));
+    const stratum::RankedBlueNoise z(stratum::default_blue_noise_table(), spp, 100 + std::uint64_t(seed));
     std::vector<double> values(std::size_t(w) * w);
     for (int y = 0; y < w; ++y)
       for (int x = 0; x < w; ++x) {

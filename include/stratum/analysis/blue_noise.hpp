@@ -1,5 +1,6 @@
 #pragma once
-/// The optimizer of sobol-bn's rank tiles (sequences/sobol_bn.hpp).
+/// The optimizer of the rank tiles of sobol-bn, pmj02-bn and lattice-bn
+/// (sequences/ranked_blue_noise.hpp).
 ///
 /// Heitz et al. 2019 optimize per-pixel keys so that the errors of
 /// neighbouring pixels, over a set of test integrands, are dissimilar;
@@ -12,7 +13,8 @@
 /// e_t the error image of test integrand t (a randomly oriented heaviside
 /// in the pair's two dimensions, integrated by each pixel's block of spp
 /// points, spp = 1, 2, 4, …, max_spp, each integrand with its own random
-/// Owen scramble of the sequence, so the tile serves any seed), normalized
+/// randomization of the base sequence (an Owen scramble, PMJ02 digit keys or a
+/// random shift), so the tile serves any seed), normalized
 /// so each integrand weighs the same, and G the binomial filter
 /// [1 4 6 4 1]/16 per axis (a Gaussian of σ = 1 pixel, exact in binary
 /// floating point), on the torus, so the tile wraps seamlessly. A pixel's
@@ -33,15 +35,16 @@
 #include <functional>
 #include <vector>
 
-#include "stratum/sequences/sobol_bn.hpp"
+#include "stratum/sequences/ranked_blue_noise.hpp"
 
 namespace stratum::analysis {
 
 struct BlueNoiseOptions {
-  std::uint32_t size = 128;       ///< tile side in pixels, a power of 2 in [16, 256]
-  std::uint32_t dims = 8;         ///< coordinates (dims / 2 pairs, each optimized on its own), even, [2, 64]
-  std::uint64_t seed = 0;         ///< stratum::default_seed (the embedded tiles used --seed 1)
-  std::uint32_t max_spp = 16;     ///< the sample counts optimized for: 1, 2, 4, …, max_spp (a power of 2, ≤ 256)
+  BlueNoiseBase base = BlueNoiseBase::sobol;  ///< the base sequence the ranks index
+  std::uint32_t size = 128;                   ///< tile side in pixels, a power of 2 in [16, 256]
+  std::uint32_t dims = 8;      ///< coordinates (dims / 2 pairs, each optimized on its own), even, [2, 64] (lattice: 32)
+  std::uint64_t seed = 0;      ///< stratum::default_seed (the embedded tiles used --seed 1)
+  std::uint32_t max_spp = 16;  ///< the sample counts optimized for: 1, 2, 4, …, max_spp (a power of 2, ≤ 256)
   std::uint32_t integrands = 32;  ///< test integrands per sample count, [1, 1024]
   std::uint32_t sweeps = 256;     ///< swap proposals per pixel, [0, 100000]
 };

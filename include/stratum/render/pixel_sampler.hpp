@@ -20,7 +20,7 @@
 /// takes the pixel's samples K·spp … (K+1)·spp − 1, so frames 0…K−1 together
 /// are exactly the samples of one frame at K·spp (for sobol at K·spp = 2^m a
 /// (0,m,2)-net in each dimension pair); any other sampler (a pattern, zsobol,
-/// sobol-bn) draws frame K from seed hash(seed, K): independent frames. Frame
+/// sobol-bn, pmj02-bn, lattice-bn) draws frame K from seed hash(seed, K): independent frames. Frame
 /// 0 is the render without frames, bit for bit.
 ///
 /// Time (LECTURE.md §8): with a time pattern (random, cook, magic-square),
@@ -51,7 +51,7 @@
 #include "stratum/registry.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/sequences/sobol.hpp"
-#include "stratum/sequences/sobol_bn.hpp"
+#include "stratum/sequences/ranked_blue_noise.hpp"
 #include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/hash.hpp"
 
@@ -182,22 +182,22 @@ class PixelSampler {
     return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair);
   }
 
-  /// sobol-bn (sequences/sobol_bn.hpp): the tile's pairs share one scramble
+  /// sobol-bn, pmj02-bn, lattice-bn (sequences/ranked_blue_noise.hpp): the tile's pairs share one randomization
   /// per render (derived once); per pixel and dimension its keyed pair, valid
   /// when its stamp is this pixel's.
-  std::optional<SobolBn> sobol_bn_;
-  std::vector<SobolBn::PixelPair> sobol_bn_shared_, sobol_bn_pixel_;
-  std::vector<std::uint64_t> sobol_bn_stamps_;
-  const SobolBn::PixelPair& sobol_bn_pair(std::uint32_t dimension) {
-    while (sobol_bn_shared_.size() <= dimension)
-      sobol_bn_shared_.push_back(sobol_bn_->shared_pair(std::uint32_t(sobol_bn_shared_.size())));
-    if (sobol_bn_stamps_.size() <= dimension)
-      sobol_bn_stamps_.resize(dimension + 1, 0), sobol_bn_pixel_.resize(dimension + 1);
-    if (sobol_bn_stamps_[dimension] != pixel_stamp_) {
-      sobol_bn_pixel_[dimension] = sobol_bn_->pixel_pair(pixel_x_, pixel_y_, dimension, sobol_bn_shared_[dimension]);
-      sobol_bn_stamps_[dimension] = pixel_stamp_;
+  std::optional<RankedBlueNoise> ranked_bn_;
+  std::vector<RankedBlueNoise::PixelPair> ranked_bn_shared_, ranked_bn_pixel_;
+  std::vector<std::uint64_t> ranked_bn_stamps_;
+  const RankedBlueNoise::PixelPair& ranked_bn_pair(std::uint32_t dimension) {
+    while (ranked_bn_shared_.size() <= dimension)
+      ranked_bn_shared_.push_back(ranked_bn_->shared_pair(std::uint32_t(ranked_bn_shared_.size())));
+    if (ranked_bn_stamps_.size() <= dimension)
+      ranked_bn_stamps_.resize(dimension + 1, 0), ranked_bn_pixel_.resize(dimension + 1);
+    if (ranked_bn_stamps_[dimension] != pixel_stamp_) {
+      ranked_bn_pixel_[dimension] = ranked_bn_->pixel_pair(pixel_x_, pixel_y_, dimension, ranked_bn_shared_[dimension]);
+      ranked_bn_stamps_[dimension] = pixel_stamp_;
     }
-    return sobol_bn_pixel_[dimension];
+    return ranked_bn_pixel_[dimension];
   }
 
   /// halton (permute) without RandomDigitPermutations' tables: what point i < n
