@@ -80,6 +80,10 @@ BENCHMARK_CAPTURE(BM_Stratum, sobol_owen_hash, std::string("sobol"), std::string
 BENCHMARK_CAPTURE(BM_Stratum, pmj02, std::string("pmj02"), std::string(""));
 BENCHMARK_CAPTURE(BM_Stratum, zsobol, std::string("zsobol"), std::string(""));
 BENCHMARK_CAPTURE(BM_Stratum, halton, std::string("halton"), std::string(""));
+BENCHMARK_CAPTURE(BM_Stratum, sobol_bn, std::string("sobol-bn"), std::string(""));
+BENCHMARK_CAPTURE(BM_Stratum, pmj02_bn, std::string("pmj02-bn"), std::string(""));
+BENCHMARK_CAPTURE(BM_Stratum, lattice_bn, std::string("lattice-bn"), std::string(""));
+BENCHMARK_CAPTURE(BM_Stratum, lattice, std::string("lattice-sequence"), std::string(""));
 BENCHMARK(BM_OpenQmc<oqmc::SobolSampler>)->Name("BM_OpenQmc/sobol");
 BENCHMARK(BM_OpenQmc<oqmc::PmjSampler>)->Name("BM_OpenQmc/pmj");
 BENCHMARK(BM_OpenQmc<oqmc::LatticeSampler>)->Name("BM_OpenQmc/lattice");

@@ -105,7 +105,8 @@ std::vector<SamplerInfo> blue_noise() {
                     {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
                      "blue-noise error across pixels (the tile's dimensions)"}}),
       ranked_entry({BlueNoiseBase::pmj02,
-                    "stochastic PMJ02 sequence (an Owen-scrambled (0,2)-sequence, as pmj02)",
+                    "digital PMJ02 (0,2)-sequence (Helmer et al. 2021's generator matrices) under a hash-based Owen "
+                    "scramble, pmj02's kind of point sets,",
                     {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
                      "blue-noise error across pixels (the tile's dimensions)"}}),
       ranked_entry({BlueNoiseBase::lattice,

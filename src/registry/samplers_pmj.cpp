@@ -1,6 +1,12 @@
-/// Registry entries: progressive multi-jittered (0,2) points (pmj02).
+/// Registry entries: progressive multi-jittered (0,2) points (pmj02) and
+/// their blue-noise variant (pmj02bn).
+#include <algorithm>
+#include <string>
+
 #include "families.hpp"
+#include "stratum/memory.hpp"
 #include "stratum/sequences/pmj.hpp"
+#include "stratum/sequences/pmj02bn.hpp"
 #include "support.hpp"
 
 namespace stratum::registry_families {
@@ -32,6 +38,44 @@ std::vector<SamplerInfo> pmj() {
             return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
               return pmj.sample(request.start + i, j);
             });
+          },
+  });
+
+  list.push_back({
+      .name = "pmj02bn",
+      .kind = "sequence",
+      .description =
+          "progressive multi-jittered (0,2) sequence with blue-noise properties (Christensen, Kensler, Kilpatrick "
+          "2018): each point in the square stratum of the (0,2) construction, the best of k candidates there "
+          "(farthest, toroidally, from the points before it); every 2^k prefix a (0,k,2)-net whose points are "
+          "also spread apart (blue noise within the set, unlike sobol-bn/pmj02-bn's blue noise across pixels)",
+      .min_dim = 1,
+      .max_dim = 2,
+      .properties = {"progressive", "(0,2)-sequence", "multi-jittered", "blue noise (within the point set)"},
+      .randomizers = {"none"},  // its own seeded randomness, as pmj02
+      .counts = "any n >= 1 with start + n <= 2^31 (points are placed one after another: start + n are made)",
+      .params = {params::integer("candidates",
+                                 "candidates per point, the farthest from the points before it kept (1: plain "
+                                 "stochastic pmj02 digits)",
+                                 std::to_string(Pmj02Bn::default_candidates), closed(1, Pmj02Bn::max_candidates))},
+      .validate =
+          [](const SamplerRequest& request) {
+            const std::uint64_t total = request.start + *request.n;
+            require(total <= Pmj02Bn::max_points, "n", std::to_string(*request.n),
+                    "pmj02bn places start + n points one after another; start + n must be at most 2^31");
+            // The sequence's bits, coordinates and neighbour grid: about 44 bytes a point.
+            require_memory(44.0 * static_cast<double>(total), std::to_string(total) + " pmj02bn points being placed");
+          },
+      .count = requested_count,
+      .generate =
+          [](const SamplerRequest& request) {
+            const Pmj02Bn sequence(request.seed, static_cast<unsigned>(request.values.integer("candidates")));
+            const std::vector<std::uint64_t> bits = sequence.generate_bits(request.start + *request.n);
+            PointSet points = allocate_points(*request.n, request.d);
+            for (std::uint64_t i = 0; i < *request.n; ++i)
+              for (unsigned j = 0; j < request.d; ++j)
+                points.data[i * request.d + j] = bits_to_double(bits[2 * (request.start + i) + j]);
+            return points;
           },
   });
 

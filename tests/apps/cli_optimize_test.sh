@@ -42,6 +42,11 @@ for s in sobol-bn pmj02-bn lattice-bn; do
     -o "$tmp/bn.png" --exr "$tmp/bn.exr" && [ -s "$tmp/bn.exr" ] && ok || fail "render --sampler $s"
 done
 
+# pmj02bn (blue noise within the point set) is a progressive sequence: --start continues it.
+"$stratum" points --sampler pmj02bn -n 16 --seed 3 >"$tmp/bn16" && "$stratum" points --sampler pmj02bn -n 8 --start 8 \
+  --seed 3 >"$tmp/bn8" && [ "$(tail -n 8 "$tmp/bn16")" = "$(cat "$tmp/bn8")" ] && ok || fail "pmj02bn --start"
+expect_error "candidates" points --sampler pmj02bn -n 8 -p candidates=0
+
 expect_error "size" optimize blue-noise --size 8 -o "$tmp/c.bin"
 expect_error "power of 2" optimize blue-noise --size 24 -o "$tmp/c.bin"
 expect_error "dims" optimize blue-noise --size 16 --dims 3 -o "$tmp/c.bin"

@@ -13,7 +13,7 @@
 /// e_t the error image of test integrand t (a randomly oriented heaviside
 /// in the pair's two dimensions, integrated by each pixel's block of spp
 /// points, spp = 1, 2, 4, …, max_spp, each integrand with its own random
-/// randomization of the base sequence (an Owen scramble, PMJ02 digit keys or a
+/// randomization of the base sequence (an Owen scramble of sobol or pmj02, or a
 /// random shift), so the tile serves any seed), normalized
 /// so each integrand weighs the same, and G the binomial filter
 /// [1 4 6 4 1]/16 per axis (a Gaussian of σ = 1 pixel, exact in binary

@@ -32,7 +32,7 @@
 /// in another order within each power of two. It is unbiased, has Owen's
 /// variance bounds, and keeps (unlike Cranley–Patterson rotation) every
 /// elementary interval. The blue-noise variant (pmj02bn: best candidate
-/// inside the chosen stratum) is not index-addressable and is not provided.
+/// inside the chosen stratum) is not index-addressable: sequences/pmj02bn.hpp.
 ///
 /// Higher dimensions (an extension, not in the papers): dimensions
 /// (2t, 2t + 1) are a further pmj02 pair with independent random digits,

@@ -27,9 +27,12 @@
 /// are as well stratified as its first 2^m:
 /// - sobol: Sobol' dimensions 0 and 1 under a hash-based Owen scramble per
 ///   coordinate. A pixel's block is a (0,m,2)-net in every pair (tested).
-/// - pmj02: the stochastic PMJ02 sequence of sequences/pmj.hpp (Helmer et al.
-///   2021), digits keyed per coordinate: an Owen-scrambled (0,2)-sequence,
-///   so again a (0,m,2)-net per pixel and pair (tested).
+/// - pmj02: the digital (0,2)-sequence behind PMJ02 (generator matrices of
+///   Stirling numbers mod 2, Helmer et al. 2021; sequences/pmj.hpp) under the
+///   same hash-based Owen scramble: pmj02's kind of point sets (its stochastic
+///   construction is an Owen scrambling of this sequence) at the cost of one
+///   XOR per index bit instead of a hash per link of pmj02's chain. Again a
+///   (0,m,2)-net per pixel and pair (tested).
 /// - lattice: the extensible rank-1 lattice sequence frac(φ_2(k) g) of
 ///   sequences/lattice_sequence.hpp, pair p on components (2p, 2p + 1) of
 ///   its default generating vector, under a random shift (Cranley–Patterson
@@ -103,7 +106,8 @@ class RankedBase {
                                     std::uint64_t ky) const noexcept {
     switch (base_) {
       case BlueNoiseBase::pmj02:
-        return {Pmj02::keyed_bits(sequence, 0, kx), Pmj02::keyed_bits(sequence, 1, ky)};
+        return {reverse_bits64(HashOwenScrambler::Dimension(kx).scramble_reversed(pmj02_reversed(sequence, 0))),
+                reverse_bits64(HashOwenScrambler::Dimension(ky).scramble_reversed(pmj02_reversed(sequence, 1)))};
       case BlueNoiseBase::lattice: {
         const auto& g = LatticeSequence::default_generator;
         const std::uint32_t c = (2 * pair) % std::uint32_t(g.size());
@@ -120,6 +124,14 @@ class RankedBase {
   static const Sobol& sobol_2d() {
     static const Sobol sobol(2);
     return sobol;
+  }
+  /// The unscrambled digital PMJ02 point's coordinate, digits reversed (first
+  /// digit in bit 0): the XOR of the generator columns of the index's bits.
+  static std::uint64_t pmj02_reversed(std::uint64_t index, unsigned coordinate) noexcept {
+    std::uint64_t word = 0;
+    for (; index != 0; index &= index - 1)
+      word ^= Pmj02::generator_column(coordinate, static_cast<unsigned>(std::countr_zero(index)));
+    return word;
   }
   BlueNoiseBase base_;
   const Sobol* sobol_;
