@@ -20,6 +20,7 @@ struct OptimizeOptions {
   std::int64_t size = 128, dims = 8, max_spp = 16, integrands = 32, sweeps = 256;
   std::uint64_t seed = default_seed;
   std::string base = "sobol";
+  std::string structure = "morton";
   std::string output;
   bool quiet = false;
 };
@@ -38,6 +39,7 @@ void run_blue_noise(const OptimizeOptions& o) {
   options.integrands = bounded(o.integrands, "integrands");
   options.sweeps = bounded(o.sweeps, "sweeps");
   options.seed = o.seed;
+  options.structure = blue_noise_structure_from(o.structure, "structure");
   analysis::check_blue_noise_options(options);
   io::OutputFile file("output", o.output);
   file.prepare();  // refused before the work
@@ -52,10 +54,10 @@ void run_blue_noise(const OptimizeOptions& o) {
   file.write([&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
   file.commit();
   fmt::print(
-      "# blue-noise rank tile of {} {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} bytes "
-      "in {:.1f} s\n",
-      blue_noise_base_name(table.base), table.size, table.size, table.dims, table.seed, table.max_spp, table.integrands,
-      table.sweeps, bytes.size(), seconds);
+      "# blue-noise rank tile of {} ({}) {}x{}, {} dims, seed {}, spp 1..{}, {} integrands per spp, {} sweeps: {} "
+      "bytes in {:.1f} s\n",
+      blue_noise_base_name(table.base), blue_noise_structure_name(table.structure), table.size, table.size, table.dims,
+      table.seed, table.max_spp, table.integrands, table.sweeps, bytes.size(), seconds);
   fmt::print("# energy: blurred error over the test integrands, white = 1\n");
   fmt::print("# {:>4} {:>10} {:>10} {:>10}\n", "pair", "initial", "final", "accepted");
   for (std::size_t p = 0; p < report.size(); ++p)
@@ -90,6 +92,11 @@ void add_optimize_command(CLI::App& app) {
   command->add_option("--integrands", o->integrands, "test heavisides per spp, [1, 1024]")->capture_default_str();
   command->add_option("--sweeps", o->sweeps, "swap proposals per pixel, [0, 100000]")->capture_default_str();
   command->add_option("-o,--output", o->output, "the rank file to write")->required();
+  command
+      ->add_option("--structure", o->structure,
+                   "morton: every aligned 2^l x 2^l block of pixels holds 4^l consecutive ranks (as ZSobol), only the "
+                   "ranks within each 2x2 block swapped; free: any two pixels swapped")
+      ->capture_default_str();
   command->add_flag("-q,--quiet", o->quiet, "no progress on stderr");
   command->callback([o] { run_blue_noise(*o); });
 }

@@ -45,9 +45,17 @@ py::dict image_spectrum(const Array& values) {
 }
 
 /// analysis/blue_noise.hpp: the key file's bytes and the per-pair energies.
-py::tuple optimize_blue_noise(const std::string& base, std::uint32_t size, std::uint32_t dims, std::uint64_t seed,
-                              std::uint32_t max_spp, std::uint32_t integrands, std::uint32_t sweeps) {
-  sa::BlueNoiseOptions o{stratum::blue_noise_base_from(base, "base"), size, dims, seed, max_spp, integrands, sweeps};
+py::tuple optimize_blue_noise(const std::string& base, const std::string& structure, std::uint32_t size,
+                              std::uint32_t dims, std::uint64_t seed, std::uint32_t max_spp, std::uint32_t integrands,
+                              std::uint32_t sweeps) {
+  sa::BlueNoiseOptions o{stratum::blue_noise_base_from(base, "base"),
+                         size,
+                         dims,
+                         seed,
+                         max_spp,
+                         integrands,
+                         sweeps,
+                         stratum::blue_noise_structure_from(structure, "structure")};
   sa::check_blue_noise_options(o);
   std::vector<sa::BlueNoisePairReport> report;
   std::string bytes;
@@ -114,8 +122,8 @@ py::dict pair_correlation(const Array& x, const std::vector<double>& radii, doub
 void bind_spectra(py::module_& m) {
   m.def("_spectrum", &spectrum, py::arg("realizations"), py::arg("max_frequency"), py::arg("threads"));
   m.def("_image_spectrum", &image_spectrum, py::arg("values"));
-  m.def("_optimize_blue_noise", &optimize_blue_noise, py::arg("base"), py::arg("size"), py::arg("dims"),
-        py::arg("seed"), py::arg("max_spp"), py::arg("integrands"), py::arg("sweeps"));
+  m.def("_optimize_blue_noise", &optimize_blue_noise, py::arg("base"), py::arg("structure"), py::arg("size"),
+        py::arg("dims"), py::arg("seed"), py::arg("max_spp"), py::arg("integrands"), py::arg("sweeps"));
   m.def("_pair_correlation", &pair_correlation, py::arg("x"), py::arg("radii"), py::arg("sigma"), py::arg("threads"));
   m.def("_default_pair_correlation_grid", [](std::size_t n, std::size_t d, std::size_t count) {
     const sa::PairCorrelation grid = sa::default_pair_correlation_grid(n, d, count);

@@ -78,10 +78,12 @@ def _count(name, value, low, high):
 
 
 def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 0, max_spp: int = 16, integrands: int = 32,
-                        sweeps: int = 256, output=None, base: str = "sobol") -> dict:
+                        sweeps: int = 256, output=None, base: str = "sobol",
+                        structure: str = "morton") -> dict:
     """The rank tile of sobol-bn, pmj02-bn or lattice-bn (``base`` "sobol",
     "pmj02" or "lattice"; docs/blue-noise.md), as ``stratum optimize
-    blue-noise``: per-pixel ranks (which block of the shared randomized base
+    blue-noise``; ``structure`` "morton" (ZSobol-like Morton-structured ranks,
+    the default) or "free": per-pixel ranks (which block of the shared randomized base
     sequence a pixel takes) swapped between pixels so that the
     blurred error of test heavisides at spp = 1, 2, ..., max_spp is small.
     Deterministic: the same arguments give the same bytes as the CLI. Returns
@@ -92,8 +94,10 @@ def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 0, max_spp: 
     table=output)`` (or pmj02-bn, lattice-bn)."""
     if not isinstance(base, str):
         raise InvalidArgument(f"invalid base = {base!r}: allowed: sobol, pmj02, lattice")
+    if not isinstance(structure, str):
+        raise InvalidArgument(f"invalid structure = {structure!r}: allowed: morton, free")
     data, pairs = _stratum._optimize_blue_noise(
-        base,
+        base, structure,
         _count("size", size, 0, 1 << 20), _count("dims", dims, 0, 1 << 20),
         _count("seed", seed, 0, (1 << 64) - 1), _count("max_spp", max_spp, 0, 1 << 20),
         _count("integrands", integrands, 0, 1 << 20), _count("sweeps", sweeps, 0, 1 << 20))
@@ -111,7 +115,7 @@ def optimize_blue_noise(size: int = 128, dims: int = 8, seed: int = 0, max_spp: 
             if os.path.exists(staging):
                 os.remove(staging)
             raise
-    ranks = np.frombuffer(data, dtype="<u2", offset=40).reshape(size, size, dims // 2)
+    ranks = np.frombuffer(data, dtype="<u2", offset=44).reshape(size, size, dims // 2)
     return {"ranks": ranks, "bytes": data, "pairs": pairs}
 
 

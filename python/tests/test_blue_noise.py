@@ -29,6 +29,13 @@ def test_regenerates_the_committed_small_tile(tmp_path):
         assert p["final_energy"] < p["initial_energy"] and 0 < p["accepted"] <= p["proposed"]
     other = stratum.optimize_blue_noise(size=16, dims=4, seed=6, sweeps=64)
     assert other["bytes"] != result["bytes"]
+    # the default structure is morton: every aligned 2x2 block of pixels holds 4 consecutive ranks
+    blocks = ranks.reshape(8, 2, 8, 2, 2).transpose(0, 2, 4, 1, 3).reshape(8, 8, 2, 4)
+    assert np.all(blocks.max(-1) - blocks.min(-1) == 3) and np.all(blocks.min(-1) % 4 == 0)
+    free = stratum.optimize_blue_noise(size=16, dims=4, seed=5, sweeps=64, structure="free")
+    assert free["bytes"] != result["bytes"]
+    fb = free["ranks"].reshape(8, 2, 8, 2, 2).transpose(0, 2, 4, 1, 3).reshape(8, 8, 2, 4)
+    assert not np.all(fb.max(-1) - fb.min(-1) == 3)
 
 
 def test_sobol_bn_reads_a_written_tile(tmp_path):
@@ -74,6 +81,8 @@ def test_the_other_bases(tmp_path):
         stratum.optimize_blue_noise(size=16, base=1)
     with pytest.raises(InvalidArgument, match="dims"):
         stratum.optimize_blue_noise(size=16, dims=34, base="lattice")
+    with pytest.raises(InvalidArgument, match="structure"):
+        stratum.optimize_blue_noise(size=16, structure="tree")
 
 
 def test_bad_input():

@@ -76,10 +76,32 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
   const unsigned levels = static_cast<unsigned>(std::countr_zero(o.max_spp)) + 1;
   const std::size_t m = std::size_t{levels} * o.integrands;  // test columns
 
-  // The ranks start as a random permutation (Fisher–Yates, hashed draws): white.
   std::vector<std::uint16_t> ranks(n);
-  for (std::size_t p = 0; p < n; ++p) ranks[p] = static_cast<std::uint16_t>(p);
-  for (std::size_t p = n - 1; p > 0; --p) std::swap(ranks[p], ranks[uniform_below(p + 1, o.seed, tag_ranks, pair, p)]);
+  if (o.structure == BlueNoiseStructure::morton) {
+    // Morton ranks: the pixels of every aligned 2^l × 2^l block hold 4^l consecutive
+    // ranks (so neighbours' blocks together are an aligned block of the sequence, a
+    // net), each base-4 digit permuted per block as ZSobol does (Ahmed & Wonka 2020).
+    const unsigned levels_of_tile = static_cast<unsigned>(std::countr_zero(s));
+    for (std::size_t p = 0; p < n; ++p) {
+      const std::uint32_t x = std::uint32_t(p % s), y = std::uint32_t(p / s);
+      std::uint32_t rank = 0;
+      for (unsigned l = 0; l < levels_of_tile; ++l) {
+        const unsigned digit = ((x >> l) & 1u) | (((y >> l) & 1u) << 1);
+        const std::uint64_t block = (std::uint64_t{y >> (l + 1)} << 32) | (x >> (l + 1));
+        // a permutation of the four digits from a hash of (seed, pair, level, block)
+        const std::uint64_t h = hash64(o.seed, tag_ranks, pair, l, block);
+        std::uint8_t perm[4] = {0, 1, 2, 3};
+        for (unsigned i = 3; i > 0; --i) std::swap(perm[i], perm[(h >> (8 * i)) % (i + 1)]);
+        rank |= std::uint32_t{perm[digit]} << (2 * l);
+      }
+      ranks[p] = static_cast<std::uint16_t>(rank);
+    }
+  } else {
+    // The ranks start as a random permutation (Fisher–Yates, hashed draws): white.
+    for (std::size_t p = 0; p < n; ++p) ranks[p] = static_cast<std::uint16_t>(p);
+    for (std::size_t p = n - 1; p > 0; --p)
+      std::swap(ranks[p], ranks[uniform_below(p + 1, o.seed, tag_ranks, pair, p)]);
+  }
 
   // e[p·m + c]: the error of pixel p's key on column c = level·T + t.
   std::vector<double> e(n * m), conv(n * m, 0.0);
@@ -161,6 +183,10 @@ std::vector<std::uint16_t> optimize_pair(const BlueNoiseOptions& o, std::uint32_
     } else {
       dx = int(((h >> 33) & 0xffffu) * s >> 16), dy = int(((h >> 49) & 0x7fffu) * s >> 15);
     }
+    if (o.structure ==
+        BlueNoiseStructure::morton) {  // a sibling in the same aligned 2 × 2 block: the Morton structure stays
+      dx = int((ax & ~1u) + ((h >> 33) & 1u)) - int(ax), dy = int((ay & ~1u) + ((h >> 34) & 1u)) - int(ay);
+    }
     const std::uint32_t bx = wrap(std::int64_t{ax} + dx, s), by = wrap(std::int64_t{ay} + dy, s);
     const std::size_t b = std::size_t{by} * s + bx;
     if (b == a) continue;
@@ -208,8 +234,9 @@ BlueNoiseTable optimize_blue_noise(const BlueNoiseOptions& o, std::vector<BlueNo
   const std::size_t n = std::size_t{o.size} * o.size;
   const unsigned levels = static_cast<unsigned>(std::countr_zero(o.max_spp)) + 1;
   require_memory(2 * n * levels * o.integrands * sizeof(double), "the optimizer's error images");
-  BlueNoiseTable table{o.base,       o.size,   o.dims, o.max_spp,
-                       o.integrands, o.sweeps, o.seed, std::vector<std::uint16_t>(n * (o.dims / 2))};
+  BlueNoiseTable table{o.base,   o.structure, o.size,
+                       o.dims,   o.max_spp,   o.integrands,
+                       o.sweeps, o.seed,      std::vector<std::uint16_t>(n * (o.dims / 2))};
   const std::uint32_t pairs = o.dims / 2;
   if (report) report->assign(pairs, {});
   for (std::uint32_t pair = 0; pair < pairs; ++pair) {

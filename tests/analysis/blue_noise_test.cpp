@@ -45,23 +45,50 @@ TEST(BlueNoiseOptimizer, RegeneratesTheCommittedSmallTile) {
 }
 
 TEST(BlueNoiseOptimizer, OnlySwapsRanksAndLowersTheEnergy) {
-  sa::BlueNoiseOptions none = small();
-  none.sweeps = 0;
-  std::vector<sa::BlueNoisePairReport> report;
-  const stratum::BlueNoiseTable start = sa::optimize_blue_noise(none);
-  const stratum::BlueNoiseTable end = sa::optimize_blue_noise(small(), &report);
-  for (std::uint32_t pair = 0; pair < 2; ++pair) {
-    std::vector<std::uint16_t> a, b, all(256);  // the pair's ranks, sorted: both permutations of the pixels
-    for (std::size_t p = 0; p < 256; ++p) a.push_back(start.ranks[p * 2 + pair]), b.push_back(end.ranks[p * 2 + pair]);
-    EXPECT_NE(a, b) << "pair " << pair;
-    std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
-    for (std::size_t p = 0; p < 256; ++p) all[p] = std::uint16_t(p);
-    EXPECT_EQ(a, all) << "pair " << pair;
-    EXPECT_EQ(b, all) << "pair " << pair;
-    // white ranks start near 1 (measured 0.89, 0.88); 0.41 and 0.40 after 64 sweeps
-    EXPECT_GT(report[pair].initial_energy / report[pair].white_energy, 0.8);
-    EXPECT_LT(report[pair].final_energy / report[pair].white_energy, 0.65);
-    EXPECT_GT(report[pair].accepted, 0u);
+  for (const auto structure : {stratum::BlueNoiseStructure::morton, stratum::BlueNoiseStructure::free}) {
+    sa::BlueNoiseOptions options = small();
+    options.structure = structure;
+    sa::BlueNoiseOptions none = options;
+    none.sweeps = 0;
+    std::vector<sa::BlueNoisePairReport> report;
+    const stratum::BlueNoiseTable start = sa::optimize_blue_noise(none);
+    const stratum::BlueNoiseTable end = sa::optimize_blue_noise(options, &report);
+    EXPECT_EQ(end.structure, structure);
+    const bool morton = structure == stratum::BlueNoiseStructure::morton;
+    for (std::uint32_t pair = 0; pair < 2; ++pair) {
+      std::vector<std::uint16_t> a, b, all(256);  // the pair's ranks, sorted: both permutations of the pixels
+      for (std::size_t p = 0; p < 256; ++p)
+        a.push_back(start.ranks[p * 2 + pair]), b.push_back(end.ranks[p * 2 + pair]);
+      EXPECT_NE(a, b) << "pair " << pair;
+      if (morton)  // every aligned 2^l × 2^l block holds 4^l consecutive ranks, before and after
+        for (const stratum::BlueNoiseTable* t : {&start, &end})
+          for (std::uint32_t l = 1; l <= 4; ++l)
+            for (std::uint32_t by = 0; by < 16; by += 1u << l)
+              for (std::uint32_t bx = 0; bx < 16; bx += 1u << l) {
+                std::vector<std::uint16_t> r;
+                for (std::uint32_t y = by; y < by + (1u << l); ++y)
+                  for (std::uint32_t x = bx; x < bx + (1u << l); ++x) r.push_back(t->rank(x, y, pair));
+                std::sort(r.begin(), r.end());
+                EXPECT_EQ(r.front() % r.size(), 0u);
+                EXPECT_EQ(std::size_t(r.back() - r.front()) + 1, r.size()) << "level " << l;
+              }
+      std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+      for (std::size_t p = 0; p < 256; ++p) all[p] = std::uint16_t(p);
+      EXPECT_EQ(a, all) << "pair " << pair;
+      EXPECT_EQ(b, all) << "pair " << pair;
+      const double initial = report[pair].initial_energy / report[pair].white_energy;
+      const double final = report[pair].final_energy / report[pair].white_energy;
+      if (morton) {
+        // ZSobol's random Morton ranks start blue already (measured 0.57, 0.51); 0.46, 0.42 after 64 sweeps
+        EXPECT_LT(initial, 0.7);
+        EXPECT_LT(final, 0.9 * initial);
+      } else {
+        // white ranks start near 1 (measured 0.89, 0.88); 0.41 and 0.40 after 64 sweeps
+        EXPECT_GT(initial, 0.8);
+        EXPECT_LT(final, 0.65);
+      }
+      EXPECT_GT(report[pair].accepted, 0u);
+    }
   }
 }
 
@@ -108,19 +135,20 @@ Measured heaviside_image_power(std::uint32_t pair, std::uint32_t spp, int seeds)
 }
 
 TEST(BlueNoiseOptimizer, TheDefaultTileMakesTheErrorBlue) {
-  // Measured (6 seeds, this heaviside): the first padding pair (per-pixel
-  // Owen-Sobol') 0.989, 0.990, 0.986 at 1, 4, 16 spp (sd per image 0.035,
-  // 0.048, 0.051: standard errors of the mean ≤ 0.021); the tile's first and
-  // last pairs 0.317, 0.323 at 1 spp (sd ≤ 0.029: SE ≤ 0.012), 0.400, 0.349
-  // at 4 spp (sd ≤ 0.189: SE ≤ 0.077) and 0.379, 0.381 at 16 spp (sd ≤ 0.135:
-  // SE ≤ 0.055). Each threshold lies at least 4 standard errors from the
-  // measured mean (one-sided p < 3e-5 each under normality, for 9 tests).
+  // Measured (6 seeds, this heaviside, the Morton-structured default tile):
+  // the first padding pair (per-pixel Owen-Sobol') 0.989, 0.990, 0.986 at 1,
+  // 4, 16 spp (sd per image ≤ 0.051: standard errors of the mean ≤ 0.021);
+  // the tile's first and last pairs 0.316, 0.348 at 1 spp (sd ≤ 0.083: SE ≤
+  // 0.034), 0.387, 0.305 at 4 spp (sd ≤ 0.165: SE ≤ 0.067) and 0.335, 0.314
+  // at 16 spp (sd ≤ 0.127: SE ≤ 0.052). Each threshold lies at least 4
+  // standard errors from the measured mean (one-sided p < 3e-5 each under
+  // normality, for 9 tests).
   const std::uint32_t padding = stratum::default_blue_noise_table().dims / 2;
   constexpr int seeds = 6;
   for (std::uint32_t spp : {1u, 4u, 16u}) {
     EXPECT_GT(heaviside_image_power(padding, spp, seeds).mean, 0.9) << "per-pixel Owen-Sobol' should be white, " << spp;
     for (std::uint32_t pair : {0u, padding - 1})
-      EXPECT_LT(heaviside_image_power(pair, spp, seeds).mean, spp == 1 ? 0.45 : 0.72)
+      EXPECT_LT(heaviside_image_power(pair, spp, seeds).mean, spp == 1 ? 0.5 : 0.72)
           << "pair " << pair << ", spp " << spp;
   }
 }

@@ -12,7 +12,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 "$stratum" optimize blue-noise --size 16 --dims 4 --seed 5 --sweeps 64 -q -o "$tmp/a.bin" >"$tmp/out" && ok \
   || fail "optimize: $(cat "$tmp/out")"
 cmp -s "$tmp/a.bin" "$repo/tests/analysis/data/blue-noise-16.bin" && ok || fail "the committed 16x16 tile is not regenerated"
-grep -q "blue-noise rank tile of sobol 16x16, 4 dims, seed 5" "$tmp/out" && ok || fail "summary: $(head -2 "$tmp/out")"
+grep -q "blue-noise rank tile of sobol (morton) 16x16, 4 dims, seed 5" "$tmp/out" && ok || fail "summary: $(head -2 "$tmp/out")"
 "$stratum" optimize blue-noise --size 16 --dims 4 --seed 6 --sweeps 64 -q -o "$tmp/b.bin" >/dev/null && ok || fail "seed 6"
 cmp -s "$tmp/a.bin" "$tmp/b.bin" && fail "another seed gave the same tile" || ok
 
@@ -25,7 +25,7 @@ cmp -s "$tmp/pa" "$tmp/pd" && fail "the default tile equals a test tile" || ok
 
 # The other bases: a pmj02 tile drives pmj02-bn and is refused by sobol-bn and lattice-bn.
 "$stratum" optimize blue-noise --base pmj02 --size 16 --dims 4 --seed 5 --sweeps 16 -q -o "$tmp/p.bin" >"$tmp/out" \
-  && grep -q "rank tile of pmj02 16x16" "$tmp/out" && ok || fail "optimize --base pmj02: $(cat "$tmp/out")"
+  && grep -q "rank tile of pmj02 (morton) 16x16" "$tmp/out" && ok || fail "optimize --base pmj02: $(cat "$tmp/out")"
 cmp -s "$tmp/p.bin" "$tmp/a.bin" && fail "the pmj02 tile equals the sobol tile" || ok
 "$stratum" points --sampler pmj02-bn -n 4 -d 4 --param pixel=3,2 --param table="$tmp/p.bin" >/dev/null && ok \
   || fail "pmj02-bn with its tile"
@@ -34,6 +34,10 @@ expect_error "is a tile of base pmj02" points --sampler lattice-bn -n 4 -d 2 --p
 "$stratum" optimize blue-noise --base lattice --size 16 --dims 4 --seed 5 --sweeps 16 -q -o "$tmp/l.bin" >/dev/null \
   && "$stratum" points --sampler lattice-bn -n 4 -d 4 --param table="$tmp/l.bin" >/dev/null && ok || fail "lattice tile"
 expect_error "base" optimize blue-noise --base halton --size 16 -o "$tmp/c.bin"
+"$stratum" optimize blue-noise --structure free --size 16 --dims 4 --seed 5 --sweeps 64 -q -o "$tmp/f.bin" >"$tmp/out" \
+  && grep -q "rank tile of sobol (free) 16x16" "$tmp/out" && ! cmp -s "$tmp/f.bin" "$tmp/a.bin" && ok \
+  || fail "--structure free: $(cat "$tmp/out")"
+expect_error "structure" optimize blue-noise --structure tree --size 16 -o "$tmp/c.bin"
 expect_error "dims" optimize blue-noise --base lattice --size 16 --dims 34 -o "$tmp/c.bin"
 
 # The renderer draws the ranked samplers (the committed tiles) like any sampler.

@@ -160,33 +160,53 @@ TEST(RankedBlueNoise, UnbiasedOverSeeds) {
 }
 
 TEST(RankedBlueNoise, TheKeyFileRoundTripsAndBadFilesAreRefused) {
-  stratum::BlueNoiseTable table{BlueNoiseBase::pmj02, 16, 4, 4, 3, 5, 99, std::vector<std::uint16_t>(16 * 16 * 2)};
+  stratum::BlueNoiseTable table{BlueNoiseBase::pmj02,
+                                stratum::BlueNoiseStructure::morton,
+                                16,
+                                4,
+                                4,
+                                3,
+                                5,
+                                99,
+                                std::vector<std::uint16_t>(16 * 16 * 2)};
   for (std::size_t i = 0; i < 256; ++i)
     table.ranks[2 * i] = std::uint16_t(i), table.ranks[2 * i + 1] = std::uint16_t(255 - i);
   const std::string bytes = stratum::serialize_blue_noise_table(table);
   EXPECT_EQ(bytes.substr(0, 8), "STRBNR02");
-  EXPECT_EQ(bytes.size(), 40u + 2 * table.ranks.size());
+  EXPECT_EQ(bytes.size(), 44u + 2 * table.ranks.size());
   EXPECT_EQ(stratum::parse_blue_noise_table(bytes, "t"), table);
-  // a version-1 file (no base field) is a sobol tile
+  // a version-1 file (no base and structure fields) is a free sobol tile
   stratum::BlueNoiseTable v1 = table;
   v1.base = BlueNoiseBase::sobol;
-  EXPECT_EQ(stratum::parse_blue_noise_table("STRBNR01" + bytes.substr(12), "t"), v1);
+  v1.structure = stratum::BlueNoiseStructure::free;
+  EXPECT_EQ(stratum::parse_blue_noise_table("STRBNR01" + bytes.substr(16), "t"), v1);
   EXPECT_THROW(stratum::parse_blue_noise_table(bytes.substr(0, bytes.size() - 1), "t"), stratum::invalid_argument);
   EXPECT_THROW(stratum::parse_blue_noise_table("STRBNR03" + bytes.substr(8), "t"), stratum::invalid_argument);
   std::string base = bytes;
   base[8] = 3;  // no such base
   EXPECT_THROW(stratum::parse_blue_noise_table(base, "t"), stratum::invalid_argument);
+  std::string structure = bytes;
+  structure[12] = 2;  // no such structure
+  EXPECT_THROW(stratum::parse_blue_noise_table(structure, "t"), stratum::invalid_argument);
   std::string odd = bytes;
-  odd[16] = 3;  // dims 3
+  odd[20] = 3;  // dims 3
   EXPECT_THROW(stratum::parse_blue_noise_table(odd, "t"), stratum::invalid_argument);
   std::string repeated = bytes;
-  repeated[40] = 1;  // pixel 0's rank of pair 0 = pixel 1's: not a permutation
+  repeated[44] = 1;  // pixel 0's rank of pair 0 = pixel 1's: not a permutation
   EXPECT_THROW(stratum::parse_blue_noise_table(repeated, "t"), stratum::invalid_argument);
   std::string not_power = bytes;
-  not_power[12] = 24;
+  not_power[16] = 24;
   EXPECT_THROW(stratum::parse_blue_noise_table(not_power, "t"), stratum::invalid_argument);
   // a lattice tile covers at most the 32 components of its generating vector
-  stratum::BlueNoiseTable wide{BlueNoiseBase::lattice, 16, 34, 4, 3, 5, 99, std::vector<std::uint16_t>(16 * 16 * 17)};
+  stratum::BlueNoiseTable wide{BlueNoiseBase::lattice,
+                               stratum::BlueNoiseStructure::free,
+                               16,
+                               34,
+                               4,
+                               3,
+                               5,
+                               99,
+                               std::vector<std::uint16_t>(16 * 16 * 17)};
   for (std::size_t i = 0; i < wide.ranks.size(); ++i) wide.ranks[i] = std::uint16_t(i / 17);
   EXPECT_THROW(stratum::parse_blue_noise_table(stratum::serialize_blue_noise_table(wide), "t"),
                stratum::invalid_argument);
@@ -208,10 +228,14 @@ TEST(RankedBlueNoise, TheKeyFileRoundTripsAndBadFilesAreRefused) {
 }
 
 TEST(RankedBlueNoise, TheDefaultTilesAreTheDocumentedOnes) {
-  // docs/blue-noise.md: stratum optimize blue-noise --base B --size 128 --dims 8 --seed 1 (defaults otherwise)
+  // docs/blue-noise.md: stratum optimize blue-noise --base B --size 128 --dims 8 --seed 1 (defaults otherwise;
+  // the lattice --structure free)
   for (BlueNoiseBase base : bases) {
     const stratum::BlueNoiseTable& table = stratum::default_blue_noise_table(base);
     EXPECT_EQ(table.base, base);
+    // morton for sobol and pmj02; free for the lattice (its Morton tile was worse than white in pair 2)
+    EXPECT_EQ(table.structure,
+              base == BlueNoiseBase::lattice ? stratum::BlueNoiseStructure::free : stratum::BlueNoiseStructure::morton);
     EXPECT_EQ(table.size, 128u);
     EXPECT_EQ(table.dims, 8u);
     EXPECT_EQ(table.seed, 1u);
@@ -252,19 +276,60 @@ TEST(RankedBlueNoise, RegistryPointsAreTheRenderersDraws) {
         }
       }
     }
-    // a one-point array of sample i is the pair's sample i; a 4-point array the points 4i..4i+3 of the pixel's 32
+    // a one-point array of sample i is the pair's sample i; the 8 four-point arrays of the pixel's samples are
+    // together its 32-point block of the pair (a net for sobol and pmj02)
     sampler.start_pixel_sample(5, 6, 3);
-    std::array<double, 2> one[1], four[4];
+    std::array<double, 2> one[1];
     sampler.get_2d_array(1, one);
-    sampler.get_2d_array(4, four);
     const RankedBlueNoise z(table, 8, 21);
     EXPECT_EQ(one[0], z.sample_2d(5, 6, 3, 0));
     const RankedBlueNoise z32(table, 32, 21);
-    for (std::uint32_t j = 0; j < 4; ++j) {
-      EXPECT_EQ(four[j], z.array_point(3, 4, j, z.pixel_pair(5, 6, 1)));
-      EXPECT_EQ(four[j], z32.sample_2d(5, 6, 12 + j, 1));
+    std::vector<std::array<double, 2>> arrays, block;
+    for (std::uint32_t i = 0; i < 8; ++i) {
+      sampler.start_pixel_sample(5, 6, i);
+      sampler.get_pixel_2d();  // pair 0; the array is pair 1
+      std::array<double, 2> four[4];
+      sampler.get_2d_array(4, four);
+      for (std::uint32_t j = 0; j < 4; ++j) {
+        EXPECT_EQ(four[j], z.array_point(i, 4, j, z.pixel_pair(5, 6, 1)));
+        arrays.push_back(four[j]);
+      }
     }
+    for (std::uint32_t i = 0; i < 32; ++i)
+      block.push_back(z32.point_at(z32.pixel_pair(5, 6, 1).first + i, z32.pixel_pair(5, 6, 1)));
+    std::sort(arrays.begin(), arrays.end());
+    std::sort(block.begin(), block.end());
+    EXPECT_EQ(arrays, block) << name;
   }
+}
+
+TEST(RankedBlueNoise, EachPixelAndPairReadsItsBlockInItsOwnOrder) {
+  // sobol-bn and pmj02-bn: at spp = 2^m the pixel's pair p reads its block at
+  // sample index i XOR c(x, y, p), so the pairing of samples across pairs
+  // differs between pixels and pairs (a pairing shared by the image made the
+  // error white at 16 spp); every 2^k prefix of a pixel's samples is still an
+  // aligned sub-block, a (0,k,2)-net. The lattice keeps its order (its pairs
+  // are one lattice jointly; EachLatticePixelIsOneShiftedRankOneLattice).
+  for (BlueNoiseBase base : {BlueNoiseBase::sobol, BlueNoiseBase::pmj02}) {
+    const RankedBlueNoise z(stratum::default_blue_noise_table(base), 16, 3);
+    std::vector<std::uint64_t> orders;
+    for (std::uint32_t x = 0; x < 8; ++x)
+      for (std::uint32_t pair = 0; pair < 4; ++pair) {
+        orders.push_back(z.pixel_pair(x, 0, pair).index_xor);
+        for (std::uint64_t k : {1u, 2u, 4u, 8u}) {
+          std::vector<std::array<double, 2>> prefix;
+          for (std::uint64_t i = 0; i < k; ++i) prefix.push_back(z.sample_2d(x, 0, i, pair));
+          EXPECT_TRUE(is_zero_net(prefix)) << name_of(base) << " prefix " << k;
+        }
+      }
+    std::sort(orders.begin(), orders.end());
+    EXPECT_GE(std::unique(orders.begin(), orders.end()) - orders.begin(), 8) << name_of(base);
+  }
+  const RankedBlueNoise lattice(stratum::default_blue_noise_table(BlueNoiseBase::lattice), 16, 3);
+  EXPECT_EQ(lattice.pixel_pair(3, 1, 2).index_xor, 0u);
+  // spp not a power of 2: no XOR (it could leave the block)
+  const RankedBlueNoise twelve(stratum::default_blue_noise_table(), 12, 3);
+  EXPECT_EQ(twelve.pixel_pair(3, 1, 2).index_xor, 0u);
 }
 #endif
 

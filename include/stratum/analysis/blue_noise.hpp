@@ -25,6 +25,16 @@
 /// a and b is 2 δ·(C_a − C_b) + 2 |δ|² (K(0) − K(a − b)), δ = e_b − e_a,
 /// C = K ⊛ e, kept up to date on each accepted swap.
 ///
+/// Structure (the default, "morton"): the ranks start as ZSobol's (Ahmed &
+/// Wonka 2020) Morton order with each base-4 digit permuted per block, so
+/// every aligned 2^l × 2^l block of pixels holds 4^l consecutive ranks —
+/// neighbours' blocks together are an aligned block of the base sequence, a
+/// net or lattice, under every randomization — and only the four ranks of a
+/// 2 × 2 block are swapped, which keeps that. "free" starts from a random
+/// permutation and swaps any two pixels: lower energy on the training
+/// integrands, but the error of renders at 16 spp and more is less blue
+/// (docs/blue-noise.md has the numbers).
+///
 /// Swaps are accepted by threshold accepting (Dueck & Scheuer 1990, the
 /// deterministic variant of simulated annealing): ΔE < τ, τ falling
 /// linearly to 0 over the run. Every random choice is a hash of the seed
@@ -45,8 +55,9 @@ struct BlueNoiseOptions {
   std::uint32_t dims = 8;      ///< coordinates (dims / 2 pairs, each optimized on its own), even, [2, 64] (lattice: 32)
   std::uint64_t seed = 0;      ///< stratum::default_seed (the embedded tiles used --seed 1)
   std::uint32_t max_spp = 16;  ///< the sample counts optimized for: 1, 2, 4, …, max_spp (a power of 2, ≤ 256)
-  std::uint32_t integrands = 32;  ///< test integrands per sample count, [1, 1024]
-  std::uint32_t sweeps = 256;     ///< swap proposals per pixel, [0, 100000]
+  std::uint32_t integrands = 32;                              ///< test integrands per sample count, [1, 1024]
+  std::uint32_t sweeps = 256;                                 ///< swap proposals per pixel, [0, 100000]
+  BlueNoiseStructure structure = BlueNoiseStructure::morton;  ///< Morton-structured ranks (default) or free swaps
 };
 
 /// What the optimizer reports per pair: E before and after, and E's
