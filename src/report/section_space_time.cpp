@@ -68,6 +68,27 @@ bool all_equal(const std::vector<std::uint64_t>& values, std::uint64_t target) {
   return std::all_of(values.begin(), values.end(), [&](std::uint64_t v) { return v == target; });
 }
 
+/// The mean square of an error image after a 1-pixel Gaussian blur (the
+/// binomial filter [1 4 6 4 1] / 16 per axis, σ = 1 pixel; edges clamped):
+/// what a viewer, or a denoiser, sees of the error.
+double blurred_mse(const std::vector<double>& e, int width, int height) {
+  constexpr double w[5] = {1.0 / 16, 4.0 / 16, 6.0 / 16, 4.0 / 16, 1.0 / 16};
+  const auto at = [](int v, int n) { return std::clamp(v, 0, n - 1); };
+  std::vector<double> rows(e.size(), 0.0), both(e.size(), 0.0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int k = -2; k <= 2; ++k)
+        rows[std::size_t(y) * width + x] += w[k + 2] * e[std::size_t(y) * width + at(x + k, width)];
+  double sum = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      double v = 0;
+      for (int k = -2; k <= 2; ++k) v += w[k + 2] * rows[std::size_t(at(y + k, height)) * width + x];
+      sum += v * v;
+    }
+  return sum / double(e.size());
+}
+
 /// The slide's spatial demand across pixels, as today's renderers meet it
 /// (Ahmed & Wonka 2020, pbrt-v4's ZSobolSampler): per-pixel decorrelated
 /// Owen-scrambled Sobol' against ZSobol on the penumbra scene (error over the
@@ -78,11 +99,15 @@ void screen_space_error(SectionContext& context, Section& section) {
   scene.camera.width = scene.camera.height = side;
   const render::ComparisonScene penumbra{scene, render::scene_fingerprint(scene), ""};
   std::vector<render::CompareConfig> configs;
-  for (std::uint32_t spp : {1u, 4u})
-    for (const char* sampler : {"sobol", "zsobol"}) {
+  for (std::uint32_t spp : {1u, 4u, 16u})
+    for (const char* sampler : {"sobol", "zsobol", "sobol-bn"}) {
       render::CompareConfig config;
-      config.label =
-          fmt::format("{}, {} spp", std::string(sampler) == "sobol" ? "per-pixel Owen–Sobol'" : "ZSobol", spp);
+      const std::string name = sampler;
+      config.label = fmt::format("{}, {} spp",
+                                 name == "sobol"    ? "per-pixel Owen–Sobol'"
+                                 : name == "zsobol" ? "ZSobol"
+                                                    : "sobol-bn",
+                                 spp);
       config.settings.sampler.sampler = sampler;
       config.settings.sampler.spp = spp;
       config.settings.sampler.seed = context.seed();
@@ -94,9 +119,11 @@ void screen_space_error(SectionContext& context, Section& section) {
       run_comparison(penumbra, configs, context.quick() ? 256 : 1024, context.cache_dir());
 
   nlohmann::json panels = nlohmann::json::array(), series = nlohmann::json::array();
-  Table table{"Where the error goes: power of the error below a quarter of Nyquist (white noise = 1)",
-              {"sampler", "spp", "MSE", "low-frequency power"},
-              {}};
+  Table table{
+      "Where the error goes: power of the error below a quarter of Nyquist (white noise = 1), and the MSE "
+      "a viewer sees (after a 1-pixel Gaussian blur)",
+      {"sampler", "spp", "MSE", "low-frequency power", "MSE after blur"},
+      {}};
   for (std::size_t i = 0; i < comparison.rows.size(); ++i) {
     const render::CompareRow& row = comparison.rows[i];
     // The signed luminance error as grey: 0.5 ± error (clamped when drawn).
@@ -106,10 +133,13 @@ void screen_space_error(SectionContext& context, Section& section) {
       for (int c = 0; c < 3; ++c) error.rgb[3 * p + c] = 0.5 + e[p];
     panels.push_back(image_panel(error, fmt::format("{} (MSE {})", row.label, format_number(row.mse))));
     series.push_back({{"label", row.label}, {"x", row.error_radial_frequency}, {"y", row.error_radial_power}});
-    table.rows.push_back(
-        {row.label, std::to_string(row.samples), format_number(row.mse), format_number(row.low_frequency_power)});
-    section.numbers["screen_space_error"]["rows"][row.label] = {
-        {"spp", row.samples}, {"mse", row.mse}, {"low_frequency_power", row.low_frequency_power}};
+    const double blurred = blurred_mse(e, side, side);
+    table.rows.push_back({row.label, std::to_string(row.samples), format_number(row.mse),
+                          format_number(row.low_frequency_power), format_number(blurred)});
+    section.numbers["screen_space_error"]["rows"][row.label] = {{"spp", row.samples},
+                                                                {"mse", row.mse},
+                                                                {"low_frequency_power", row.low_frequency_power},
+                                                                {"blurred_mse", blurred}};
   }
   section.numbers["screen_space_error"]["width"] = side;
   section.numbers["screen_space_error"]["reference_spp"] = comparison.reference_spp;
@@ -119,10 +149,10 @@ void screen_space_error(SectionContext& context, Section& section) {
   section.figures.push_back(image_figure(
       context, panels, "screen-space-error",
       fmt::format("The error (render − reference, luminance; grey is zero) of a floor in soft shadow, {0}×{0} pixels, "
-                  "at 1 and 4 samples per pixel: per-pixel decorrelated Owen-scrambled Sobol' against ZSobol's "
-                  "Morton-ordered, digit-permuted sequence over the whole image",
+                  "at 1, 4 and 16 samples per pixel: per-pixel decorrelated Owen-scrambled Sobol' against ZSobol's "
+                  "Morton-ordered, digit-permuted sequence over the whole image and sobol-bn's optimized ranks",
                   side),
-      4));
+      3));
   section.figures.push_back(context.plot(
       "report_lines",
       {{"panels",
@@ -133,21 +163,29 @@ void screen_space_error(SectionContext& context, Section& section) {
           {"ylog", true},
           {"series", series}}}}},
       "error-spectra",
-      "The errors' power by frequency, normalized so that white noise is 1: ZSobol moves the error's power out of the "
-      "low frequencies a viewer (or a denoiser) sees, into the high ones"));
+      "The errors' power by frequency, normalized so that white noise is 1: ZSobol and sobol-bn move the error's power "
+      "out of the low frequencies a viewer (or a denoiser) sees, into the high ones"));
   section.tables.push_back(std::move(table));
   const auto& rows = comparison.rows;
   section.text.push_back(fmt::format(
       "The slide asks samples in space to have a blue-noise spectrum. The assignments above do it inside a pixel; "
       "today's renderers do it across pixels, so that the error itself is blue noise on the screen. On a floor in "
       "soft shadow, at 1 sample per pixel, the error of per-pixel decorrelated Owen–Sobol' has low-frequency power "
-      "{} (white), ZSobol's {}, at MSE {} against {}; at 4 samples per pixel {} against {}. The same error, "
-      "moved to the frequencies the eye and a denoiser filter out — a pixel's neighbours in ZSobol's Morton order "
-      "take the next blocks of one sequence, so a 2×2 block of pixels holds one stratified set: nearby in space, "
-      "far apart in the sequence, the spatial form of Cook's rule.",
+      "{} (white), ZSobol's {} and sobol-bn's {}, at MSE {}, {} and {}; at 4 samples per pixel {}, {} and {}; at 16 "
+      "{}, {} and {}. The same error, moved to the frequencies the eye and a denoiser filter out: after a 1-pixel "
+      "blur the MSE at 1 spp is {}, {} and {}. A pixel's neighbours in ZSobol's Morton order take the next blocks of "
+      "one sequence, so a 2×2 block of pixels holds one stratified set — nearby in space, far apart in the "
+      "sequence, the spatial form of Cook's rule; sobol-bn starts from that order and swaps the blocks within each "
+      "2×2 block where an optimizer finds the blurred error of test integrands smaller (docs/blue-noise.md).",
       format_number(rows[0].low_frequency_power), format_number(rows[1].low_frequency_power),
-      format_number(rows[0].mse), format_number(rows[1].mse), format_number(rows[2].low_frequency_power),
-      format_number(rows[3].low_frequency_power)));
+      format_number(rows[2].low_frequency_power), format_number(rows[0].mse), format_number(rows[1].mse),
+      format_number(rows[2].mse), format_number(rows[3].low_frequency_power),
+      format_number(rows[4].low_frequency_power), format_number(rows[5].low_frequency_power),
+      format_number(rows[6].low_frequency_power), format_number(rows[7].low_frequency_power),
+      format_number(rows[8].low_frequency_power),
+      format_number(section.numbers["screen_space_error"]["rows"][rows[0].label]["blurred_mse"].get<double>()),
+      format_number(section.numbers["screen_space_error"]["rows"][rows[1].label]["blurred_mse"].get<double>()),
+      format_number(section.numbers["screen_space_error"]["rows"][rows[2].label]["blurred_mse"].get<double>())));
   section.text.push_back(
       "Across frames of an animation (stratum render --frame K) the same rule runs in time: a progressive sampler's "
       "frame K takes each pixel's next block of spp samples of its sequence, so frames 0…K−1 together are "

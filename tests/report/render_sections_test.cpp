@@ -9,6 +9,8 @@
 /// focus, the motion's difference inside the swept band, penumbra variance).
 /// Fixed seeds; statistical tolerances stated where used.
 #include <gtest/gtest.h>
+
+#include <map>
 #include <unistd.h>
 
 #include <algorithm>
@@ -285,6 +287,19 @@ TEST(ReportRenderSections, SpaceTimeTablesAndMotionBlur) {
                              pixels;
     EXPECT_NEAR(whole_gap, local_gap, 1e-9) << k;
   }
+  // Where the error goes: three pixel samplers at 1, 4 and 16 spp, each with
+  // its error's low-frequency power and its MSE after the 1-pixel blur (below
+  // the MSE: the blur averages neighbouring errors, which are not all equal).
+  const auto& screen = section.numbers["screen_space_error"]["rows"];
+  EXPECT_EQ(screen.size(), 9u);
+  std::map<std::uint64_t, int> per_spp;
+  for (const auto& [label, row] : screen.items()) {
+    ++per_spp[row["spp"].get<std::uint64_t>()];
+    EXPECT_GT(row["blurred_mse"].get<double>(), 0) << label;
+    EXPECT_LT(row["blurred_mse"].get<double>(), row["mse"].get<double>()) << label;
+    EXPECT_GT(row["low_frequency_power"].get<double>(), 0) << label;
+  }
+  EXPECT_EQ(per_spp, (std::map<std::uint64_t, int>{{1, 3}, {4, 3}, {16, 3}}));
   // The close-up: the sphere fills the frame, so a far larger share of its
   // pixels depends on time than of the whole box's.
   const auto& close = section.numbers["motion_close_up"];
