@@ -114,7 +114,7 @@ inline std::uint32_t blue_noise_max_dims(BlueNoiseBase base) noexcept {
 /// Owen-scramble keys (sobol), digit keys (pmj02) or shifts (lattice).
 class RankedBase {
  public:
-  explicit RankedBase(BlueNoiseBase base) : base_(base), sobol_(&sobol_2d()) {}
+  explicit RankedBase(BlueNoiseBase base) : base_(base), sobol_(&sobol_2d()), pmj02_(&pmj02_tables()) {}
   BlueNoiseBase base() const noexcept { return base_; }
 
   std::array<std::uint64_t, 2> bits(std::uint32_t pair, std::uint64_t sequence, std::uint64_t kx,
@@ -140,16 +140,35 @@ class RankedBase {
     static const Sobol sobol(2);
     return sobol;
   }
+  /// Per coordinate, the XORs of the generator columns 0–7 and 8–15 of every
+  /// byte value (as Sobol's tables): a 16-bit index is two look-ups.
+  struct Pmj02Tables {
+    std::array<std::array<std::uint64_t, 512>, 2> low{};
+    Pmj02Tables() {
+      for (unsigned c = 0; c < 2; ++c)
+        for (unsigned byte = 0; byte < 2; ++byte)
+          for (unsigned value = 1; value < 256; ++value)
+            low[c][256 * byte + value] =
+                low[c][256 * byte + (value & (value - 1))] ^
+                Pmj02::generator_column(c, 8 * byte + static_cast<unsigned>(std::countr_zero(value)));
+    }
+  };
+  static const Pmj02Tables& pmj02_tables() {
+    static const Pmj02Tables tables;
+    return tables;
+  }
   /// The unscrambled digital PMJ02 point's coordinate, digits reversed (first
   /// digit in bit 0): the XOR of the generator columns of the index's bits.
-  static std::uint64_t pmj02_reversed(std::uint64_t index, unsigned coordinate) noexcept {
-    std::uint64_t word = 0;
-    for (; index != 0; index &= index - 1)
-      word ^= Pmj02::generator_column(coordinate, static_cast<unsigned>(std::countr_zero(index)));
+  std::uint64_t pmj02_reversed(std::uint64_t index, unsigned coordinate) const noexcept {
+    const std::array<std::uint64_t, 512>& low = pmj02_->low[coordinate];
+    std::uint64_t word = low[index & 0xff] ^ low[256 + ((index >> 8) & 0xff)];
+    for (std::uint64_t rest = index >> 16 << 16; rest != 0; rest &= rest - 1)
+      word ^= Pmj02::generator_column(coordinate, static_cast<unsigned>(std::countr_zero(rest)));
     return word;
   }
   BlueNoiseBase base_;
   const Sobol* sobol_;
+  const Pmj02Tables* pmj02_;
 };
 
 /// A tile of per-pixel ranks: for pixel (x, y) of a size × size tile
