@@ -45,6 +45,11 @@ struct PointSet {
   double operator()(std::size_t i, std::size_t j) const { return data[i * d + j]; }
 };
 
+/// The property of pixel samplers (zsobol, sobol-bn, …) whose point set is
+/// one pixel's spp samples and whose `start` continues that pixel's sequence
+/// (render --frame K reads samples K·spp … (K+1)·spp − 1).
+inline constexpr const char* frames_continue_property = "start continues the pixel's sequence (frames)";
+
 struct SamplerInfo {
   std::string name;
   std::string kind;  ///< "sequence" (index-addressable) or "pattern" (finite set)

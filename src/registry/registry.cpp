@@ -58,6 +58,10 @@ static std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
+static bool has_property(const SamplerInfo& sampler, const char* property) {
+  return std::find(sampler.properties.begin(), sampler.properties.end(), property) != sampler.properties.end();
+}
+
 std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& request) {
   if (!request.n)
     require(sampler.n_optional && request.radius, "n", "(none)",
@@ -70,12 +74,12 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   if (request.radius)
     require(*request.radius > 0 && *request.radius <= 1, "radius", *request.radius, "must be in (0, 1]");
   if (request.start != 0)
-    require(sampler.kind == "sequence" || std::find(sampler.properties.begin(), sampler.properties.end(),
-                                                    "progressive") != sampler.properties.end(),
+    require(sampler.kind == "sequence" || has_property(sampler, "progressive") ||
+                has_property(sampler, frames_continue_property),
             "start", request.start,
             sampler.name +
-                " is a finite pattern; only sequences and progressive samplers (random) can start past "
-                "index 0");
+                " is a finite pattern; only sequences, progressive samplers (random) and pixel samplers "
+                "(zsobol, sobol-bn, pmj02-bn, lattice-bn: a later frame) can start past index 0");
   if (request.n)
     require(request.start <= ~std::uint64_t{0} - *request.n, "start", request.start, "start + n must fit in 64 bits");
   const std::string randomize = request.randomize.empty() ? sampler.randomizers.front() : request.randomize;

@@ -48,8 +48,9 @@ PointSet generate_ranked(const SamplerRequest& request, BlueNoiseBase base) {
   const RankedBlueNoise sampler(*table, *request.n, request.seed);
   std::vector<RankedBlueNoise::PixelPair> pairs;
   for (unsigned p = 0; p < (request.d + 1) / 2; ++p) pairs.push_back(sampler.pixel_pair(x, y, p));
-  return fill_index_addressable(*request.n, request.d, request.threads,
-                                [&](std::uint64_t i, unsigned j) { return sampler.point(i, pairs[j / 2])[j % 2]; });
+  return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
+    return sampler.point(request.start + i, pairs[j / 2])[j % 2];
+  });
 }
 
 struct RankedEntry {
@@ -103,16 +104,17 @@ std::vector<SamplerInfo> blue_noise() {
       ranked_entry({BlueNoiseBase::sobol,
                     "Owen-scrambled Sobol' sequence",
                     {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
-                     "blue-noise error across pixels (the tile's dimensions)"}}),
+                     "blue-noise error across pixels (the tile's dimensions)", frames_continue_property}}),
       ranked_entry({BlueNoiseBase::pmj02,
                     "digital PMJ02 (0,2)-sequence (Helmer et al. 2021's generator matrices) under a hash-based Owen "
                     "scramble, pmj02's kind of point sets,",
                     {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
-                     "blue-noise error across pixels (the tile's dimensions)"}}),
-      ranked_entry({BlueNoiseBase::lattice,
-                    "randomly shifted rank-1 lattice sequence (lattice's default generating vector)",
-                    {"randomly shifted rank-1 lattice per pixel", "Latin in every coordinate per pixel",
-                     "self-randomized", "blue-noise error across pixels (the tile's dimensions)"}}),
+                     "blue-noise error across pixels (the tile's dimensions)", frames_continue_property}}),
+      ranked_entry(
+          {BlueNoiseBase::lattice,
+           "randomly shifted rank-1 lattice sequence (lattice's default generating vector)",
+           {"randomly shifted rank-1 lattice per pixel", "Latin in every coordinate per pixel", "self-randomized",
+            "blue-noise error across pixels (the tile's dimensions)", frames_continue_property}}),
   };
 }
 

@@ -436,7 +436,7 @@ PointSet generate_zsobol(const SamplerRequest& request) {
   for (unsigned p = 0; p < (request.d + 1) / 2; ++p) pairs.push_back(z.sampler.pair(p));
   return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
     const ZSobol::Pair& pair = pairs[j / 2];
-    return z.sampler.point(z.sampler.sequence_index(z.x, z.y, i, pair), pair)[j % 2];
+    return z.sampler.point(z.sampler.sequence_index(z.x, z.y, request.start + i, pair), pair)[j % 2];
   });
 }
 
@@ -471,7 +471,7 @@ std::vector<SamplerInfo> sobol() {
       .min_dim = 1,
       .max_dim = 64,
       .properties = {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
-                     "blue-noise error across pixels"},
+                     "blue-noise error across pixels", frames_continue_property},
       .randomizers = {"owen-hash"},
       .counts = "n = spp, a power of 2 up to 2^24",
       .params = {params::integers("pixel", "the pixel x,y whose samples these are", "0,0", at_least(0), {2, 2}),

@@ -60,9 +60,12 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   const std::string& r = settings_.randomize;
   const std::string& name = settings_.sampler;
   const std::vector<std::string>& properties = find_sampler(name).properties;
-  const bool progressive = std::find(properties.begin(), properties.end(), "progressive") != properties.end();
-  offset_ = progressive ? std::uint64_t{settings_.frame} * settings_.spp : 0;
-  seed_ = progressive || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
+  const auto has = [&](const char* property) {
+    return std::find(properties.begin(), properties.end(), property) != properties.end();
+  };
+  const bool continues = has("progressive") || has(frames_continue_property);
+  offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
+  seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   if (name == "random" && (r.empty() || r == "none")) fast_ = Fast::random;
   if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;
   if (name == "jittered" && (r.empty() || r == "none")) fast_ = Fast::jittered;
@@ -229,7 +232,7 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
   }
   if (ranked_bn_) {
     const std::uint32_t dimension = dimension_++;
-    return ranked_bn_->point(index_, ranked_bn_pair(dimension));
+    return ranked_bn_->point(sequence_index_, ranked_bn_pair(dimension));
   }
   if (halton_direct_) {
     const std::uint32_t dimension = dimension_++;
@@ -253,7 +256,7 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
   }
   if (ranked_bn_) {  // the pixel's arrays together are its block of spp · n points
     const RankedBlueNoise::PixelPair& pair = ranked_bn_pair(dimension);
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = ranked_bn_->array_point(index_, n, i, pair);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = ranked_bn_->array_point(sequence_index_, n, i, pair);
     return;
   }
   if (halton_permute_ && n <= halton_direct_max) {

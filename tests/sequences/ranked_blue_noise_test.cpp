@@ -86,10 +86,12 @@ TEST(RankedBlueNoise, EachLatticePixelIsOneShiftedRankOneLattice) {
           for (std::uint64_t i = 0; i < spp; ++i)
             ASSERT_EQ(sorted[i], std::int64_t(i)) << "spp " << spp << " pair " << pair << " pixel " << x << "," << y;
           if (first.empty()) first = k;
-          if (2 * pair + c < g.size()) EXPECT_EQ(k, first) << "spp " << spp << " pair " << pair << " coordinate " << c;
-          else if (spp >= 4)  // a reused component pairs its samples otherwise than its first use (2 points: any
-                              // pairing is a shift of the other)
+          if (2 * pair + c < g.size()) {
+            EXPECT_EQ(k, first) << "spp " << spp << " pair " << pair << " coordinate " << c;
+          } else if (spp >= 4) {  // a reused component pairs its samples otherwise than its first use (2 points:
+                                  // any pairing is a shift of the other)
             EXPECT_NE(k, first) << "spp " << spp << " pair " << pair << " coordinate " << c;
+          }
         }
     }
   }
@@ -253,8 +255,33 @@ TEST(RankedBlueNoise, RegistryPointsAreTheRenderersDraws) {
     settings.sampler = name;
     settings.spp = 8;
     settings.seed = 21;
-    stratum::render::PixelSampler sampler(settings);
     const std::uint32_t d = 2 * (table.dims / 2 + 1);  // one padding pair too
+    // frame K's draws are the registry's points from start = K · spp on
+    for (std::uint32_t frame : {3u, 70u}) {
+      settings.frame = frame;
+      stratum::render::PixelSampler framed(settings);
+      stratum::SamplerRequest request;
+      request.n = 8;
+      request.d = d;
+      request.seed = 21;
+      request.start = std::uint64_t{frame} * 8;
+      request.params = {{"pixel", "17,33"}};
+      const stratum::PointSet points = stratum::generate_points(name, request);
+      for (std::uint32_t i = 0; i < 8; ++i) {
+        framed.start_pixel_sample(17, 33, i);
+        const auto film = framed.get_pixel_2d();
+        EXPECT_EQ(film[0], points(i, 0)) << name << " frame " << frame;
+        EXPECT_EQ(film[1], points(i, 1)) << name << " frame " << frame;
+        EXPECT_EQ(framed.get_time(), points(i, 2)) << name << " frame " << frame;
+        for (std::uint32_t p = 2; p < d / 2; ++p) {
+          const auto u = framed.get_2d();
+          EXPECT_EQ(u[0], points(i, 2 * p)) << name << " frame " << frame;
+          EXPECT_EQ(u[1], points(i, 2 * p + 1)) << name << " frame " << frame;
+        }
+      }
+    }
+    settings.frame = 0;
+    stratum::render::PixelSampler sampler(settings);
     for (auto [x, y] : {std::pair{0u, 0u}, std::pair{17u, 33u}, std::pair{390u, 2u}}) {
       stratum::SamplerRequest request;
       request.n = 8;

@@ -130,24 +130,29 @@ TEST(ZSobol, RegistryPointsAreTheRenderersDraws) {
   settings.spp = 8;
   settings.seed = 21;
   settings.resolution = 40;
-  stratum::render::PixelSampler sampler(settings);
-  for (auto [x, y] : {std::pair{0u, 0u}, std::pair{17u, 33u}, std::pair{39u, 2u}}) {
-    stratum::SamplerRequest request;
-    request.n = 8;
-    request.d = 6;
-    request.seed = 21;
-    request.params = {{"pixel", std::to_string(x) + "," + std::to_string(y)}, {"resolution", "40"}};
-    const stratum::PointSet points = stratum::generate_points("zsobol", request);
-    for (std::uint32_t i = 0; i < 8; ++i) {
-      sampler.start_pixel_sample(x, y, i);
-      const auto film = sampler.get_pixel_2d();
-      const double time = sampler.get_time();
-      const auto lens = sampler.get_2d();
-      EXPECT_EQ(film[0], points(i, 0));
-      EXPECT_EQ(film[1], points(i, 1));
-      EXPECT_EQ(time, points(i, 2));
-      EXPECT_EQ(lens[0], points(i, 4));
-      EXPECT_EQ(lens[1], points(i, 5));
+  // frame K's draws are the registry's points from start = K · spp on
+  for (std::uint32_t frame : {0u, 3u, 70u}) {
+    settings.frame = frame;
+    stratum::render::PixelSampler sampler(settings);
+    for (auto [x, y] : {std::pair{0u, 0u}, std::pair{17u, 33u}, std::pair{39u, 2u}}) {
+      stratum::SamplerRequest request;
+      request.n = 8;
+      request.d = 6;
+      request.seed = 21;
+      request.start = std::uint64_t{frame} * 8;
+      request.params = {{"pixel", std::to_string(x) + "," + std::to_string(y)}, {"resolution", "40"}};
+      const stratum::PointSet points = stratum::generate_points("zsobol", request);
+      for (std::uint32_t i = 0; i < 8; ++i) {
+        sampler.start_pixel_sample(x, y, i);
+        const auto film = sampler.get_pixel_2d();
+        const double time = sampler.get_time();
+        const auto lens = sampler.get_2d();
+        EXPECT_EQ(film[0], points(i, 0));
+        EXPECT_EQ(film[1], points(i, 1));
+        EXPECT_EQ(time, points(i, 2));
+        EXPECT_EQ(lens[0], points(i, 4));
+        EXPECT_EQ(lens[1], points(i, 5));
+      }
     }
   }
 }

@@ -19,9 +19,15 @@
 /// randomized sequence is its set, e.g. sobol, halton, pmj02, random) frame K
 /// takes the pixel's samples K·spp … (K+1)·spp − 1, so frames 0…K−1 together
 /// are exactly the samples of one frame at K·spp (for sobol at K·spp = 2^m a
-/// (0,m,2)-net in each dimension pair); any other sampler (a pattern, zsobol,
-/// sobol-bn, pmj02-bn, lattice-bn) draws frame K from seed hash(seed, K): independent frames. Frame
-/// 0 is the render without frames, bit for bit.
+/// (0,m,2)-net in each dimension pair). The blue-noise pixel samplers
+/// (property frames_continue_property: zsobol, sobol-bn, pmj02-bn,
+/// lattice-bn) continue it too: frame K is the pixel's registry points from
+/// start K·spp, the block of a neighbour in its aligned group, so frames
+/// 0…2^k−1 stratify as one set of 2^k·spp while each frame keeps its blue
+/// error in space (sequences/zsobol.hpp, ranked_blue_noise.hpp). Any other
+/// sampler (a pattern: jittered, n-rooks…) draws frame K from seed
+/// hash(seed, K): independent frames. Frame 0 is the render without frames,
+/// bit for bit.
 ///
 /// Time (LECTURE.md §8): with a time pattern (random, cook, magic-square),
 /// film positions and times come together from the space-time sampler
@@ -172,14 +178,15 @@ class PixelSampler {
       const std::uint64_t block =
           (std::uint64_t{pixel_y_ >> zsobol_block_levels} << 32) | (pixel_x_ >> zsobol_block_levels);
       if (zsobol_blocks_[dimension] != block) {
-        zsobol_block_digits_[dimension] = zsobol_->block_digits(pixel_x_, pixel_y_, pair, zsobol_block_levels);
+        zsobol_block_digits_[dimension] =
+            zsobol_->block_digits(pixel_x_, pixel_y_, pair, zsobol_block_levels, settings_.frame);
         zsobol_blocks_[dimension] = block;
       }
-      zsobol_pixel_digits_[dimension] =
-          zsobol_->pixel_digits(pixel_x_, pixel_y_, pair, zsobol_block_digits_[dimension], zsobol_block_levels);
+      zsobol_pixel_digits_[dimension] = zsobol_->pixel_digits(pixel_x_, pixel_y_, pair, zsobol_block_digits_[dimension],
+                                                              zsobol_block_levels, settings_.frame);
       zsobol_stamps_[dimension] = pixel_stamp_;
     }
-    return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair);
+    return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair, settings_.frame);
   }
 
   /// sobol-bn, pmj02-bn, lattice-bn (sequences/ranked_blue_noise.hpp): the tile's pairs share one randomization

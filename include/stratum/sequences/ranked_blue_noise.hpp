@@ -45,6 +45,17 @@
 ///   difference (at spp ≥ 4; two points in [0,1) always differ by a shift).
 /// Every point is uniform, so each pixel's estimate is unbiased (tested).
 ///
+/// Frames (LECTURE.md §8, "nearby in space, far in time"): a pixel's sample
+/// n ≥ spp, of frame K = n / spp, is sample n mod spp of block (block XOR K).
+/// The XOR maps every aligned group of 2^k ranks onto one, so each frame
+/// keeps the tile's structure (the blocks of neighbours still stratify
+/// together: blue error in space, and for the digital bases the same
+/// distribution as frame 0, since XOR on the index is a digital shift that
+/// Owen scrambling absorbs), and a pixel's frames 0..2^k − 1 are the 2^k
+/// blocks of its aligned group: together a (0, m + k, 2)-net (a 2^k·spp-point
+/// lattice), so averaged frames converge as one frame at 2^k·spp and
+/// consecutive frames' errors cancel (blue in time).
+///
 /// Dimensions after the tile's (pairs p ≥ dims / 2) are padded as OpenQMC's
 /// domains are: each pixel and pair gets its own hashed randomization and
 /// takes points 0..spp−1, i.e. a per-pixel decorrelated randomized base
@@ -307,9 +318,10 @@ class RankedBlueNoise {
   /// and the XOR on the sample index (lattice padding past its generator).
   struct PixelPair {
     std::uint64_t kx = 0, ky = 0;
-    std::uint64_t first = 0;
+    std::uint64_t first = 0;  ///< block · spp
     std::uint64_t index_xor = 0;
     std::uint32_t pair = 0;
+    std::uint64_t block = 0;
   };
   /// A table pair's image-wide keys (derived from (seed, pair)).
   PixelPair shared_pair(std::uint32_t p) const noexcept {
@@ -333,6 +345,7 @@ class RankedBlueNoise {
     const std::uint64_t block =
         tile << (2 * log2_size_) | table_->rank(std::uint32_t(sx & mask), std::uint32_t(sy & mask), p);
     PixelPair out = shared;
+    out.block = block;
     out.first = block * spp_;
     // Each pixel and pair reads its block in its own order (an XOR of the sample
     // index, which keeps every 2^k prefix an aligned sub-block): otherwise sample
@@ -353,16 +366,23 @@ class RankedBlueNoise {
     const std::array<std::uint64_t, 2> b = base_.bits(pair.pair, sequence, pair.kx, pair.ky);
     return {bits_to_double(b[0]), bits_to_double(b[1])};
   }
-  /// Sample `index` < spp of a pixel's pair.
+  /// The sequence index of sample `index` of a pixel's pair (index ≥ spp:
+  /// frame index / spp, see above).
+  std::uint64_t sequence_index(std::uint64_t index, const PixelPair& pair) const noexcept {
+    if (index < spp_) return pair.first + (index ^ pair.index_xor);
+    const std::uint64_t frame = index / spp_;
+    return (pair.block ^ frame) * spp_ + ((index - frame * spp_) ^ pair.index_xor);
+  }
+  /// Sample `index` of a pixel's pair.
   std::array<double, 2> point(std::uint64_t index, const PixelPair& pair) const noexcept {
-    return point_at(pair.first + (index ^ pair.index_xor), pair);
+    return point_at(sequence_index(index, pair), pair);
   }
   /// Point j of an array of n points belonging to sample `index` (the n
   /// shadow rays of an eye ray): the pixel's arrays together are its block
   /// of spp · n points, so they stratify across its samples.
   std::array<double, 2> array_point(std::uint64_t index, std::uint64_t n, std::uint64_t j,
                                     const PixelPair& pair) const noexcept {
-    return point_at((pair.first + (index ^ pair.index_xor)) * n + j, pair);
+    return point_at(sequence_index(index, pair) * n + j, pair);
   }
   /// Coordinates (2p, 2p + 1) of sample `index` of pixel (x, y).
   std::array<double, 2> sample_2d(std::uint32_t x, std::uint32_t y, std::uint64_t index,

@@ -25,6 +25,18 @@
 /// Dimensions come in pairs, as the renderer's draws do: pair p takes Sobol'
 /// dimensions 0 and 1 with their own digit permutations and their own Owen
 /// scramble, keyed by (seed, p), as pbrt's padded dimensions are.
+///
+/// Frames (LECTURE.md §8, "nearby in space, far in time"): a pixel's sample
+/// n ≥ spp belongs to frame K = n / spp, which reads the sequence as frame 0
+/// does with the Morton code of every pixel XORed with K (its digits beyond
+/// the image's levels placed above the index, unpermuted): each frame is a
+/// ZSobol image of its own (the XOR maps aligned blocks of pixels onto aligned
+/// blocks, so the error stays blue in space), and a pixel's frames 0..2^k − 1
+/// together are the aligned block of 2^k·spp points its 2^k nearest pixels
+/// of the hierarchy hold in frame 0: a (0, L + k, 2)-net, so averaged frames
+/// converge as one frame at 2^k·spp, and consecutive frames' errors cancel
+/// (blue in time). The price: averaged over 4^j frames, the 2^j × 2^j pixels
+/// of a block share one point set (their averaged error is correlated).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -54,8 +66,8 @@ class ZSobol {
                 samples_per_pixel <= (std::uint64_t{1} << max_log2_spp),
             "n", samples_per_pixel, "zsobol takes a power of 2 samples per pixel, at most 2^24");
     log2_spp_ = static_cast<unsigned>(std::countr_zero(samples_per_pixel));
-    const unsigned pixel_levels = static_cast<unsigned>(std::bit_width(resolution - 1u));
-    index_bits_ = 2 * pixel_levels + log2_spp_;
+    pixel_levels_ = static_cast<unsigned>(std::bit_width(resolution - 1u));
+    index_bits_ = 2 * pixel_levels_ + log2_spp_;
   }
 
   std::uint64_t samples_per_pixel() const noexcept { return std::uint64_t{1} << log2_spp_; }
@@ -75,32 +87,37 @@ class ZSobol {
 
   /// The sequence index of sample `index` of pixel (x, y) in a dimension
   /// pair: the Morton index with each base-4 digit permuted by a hash of the
-  /// digits above it (and of its level and the pair). The digits above the
-  /// sample index's depend on the pixel alone: pixel_digits, which a
-  /// renderer computes once per pixel and pair.
+  /// digits above it (and of its level and the pair); `index` ≥ spp is
+  /// sample index mod spp of frame index / spp (see above). The digits above
+  /// the sample index's depend on the pixel and frame alone: pixel_digits,
+  /// which a renderer computes once per pixel and pair.
   std::uint64_t sequence_index(std::uint32_t x, std::uint32_t y, std::uint64_t index, const Pair& pair) const noexcept {
-    return sample_digits(x, y, pixel_digits(x, y, pair), index, pair);
+    const std::uint64_t frame = index >> log2_spp_, sample = index & (samples_per_pixel() - 1);
+    return sample_digits(x, y, pixel_digits(x, y, pair, frame), sample, pair, frame);
   }
-  /// The permuted digits of the pixel's part of the index (bits ≥ L).
-  std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair) const noexcept {
-    return permute_digits(morton(x, y) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_));
+  /// The permuted digits of the pixel's part of the index (bits ≥ L) in a frame.
+  std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair,
+                             std::uint64_t frame = 0) const noexcept {
+    return high(frame) | permute_digits(code(x, y, frame) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_));
   }
   /// The part of pixel_digits shared by the aligned 2^k × 2^k block of
   /// pixels holding (x, y): its digits above the block's own k levels.
-  std::uint64_t block_digits(std::uint32_t x, std::uint32_t y, const Pair& pair, unsigned k) const noexcept {
-    return permute_digits(morton(x, y) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_ + 2 * k));
+  std::uint64_t block_digits(std::uint32_t x, std::uint32_t y, const Pair& pair, unsigned k,
+                             std::uint64_t frame = 0) const noexcept {
+    return high(frame) |
+           permute_digits(code(x, y, frame) << log2_spp_, pair, int(index_bits_) - 2, int(log2_spp_ + 2 * k));
   }
-  /// pixel_digits from the block's digits (block_digits(x, y, pair, k)):
+  /// pixel_digits from the block's digits (block_digits(x, y, pair, k, frame)):
   /// only the k levels inside the block are permuted here.
-  std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair, std::uint64_t block,
-                             unsigned k) const noexcept {
+  std::uint64_t pixel_digits(std::uint32_t x, std::uint32_t y, const Pair& pair, std::uint64_t block, unsigned k,
+                             std::uint64_t frame = 0) const noexcept {
     const int top = std::min(int(log2_spp_ + 2 * k), int(index_bits_)) - 2;
-    return block | permute_digits(morton(x, y) << log2_spp_, pair, top, int(log2_spp_));
+    return block | permute_digits(code(x, y, frame) << log2_spp_, pair, top, int(log2_spp_));
   }
-  /// pixel_digits(x, y, pair) with the permuted digits of sample `index` below them.
+  /// pixel_digits(x, y, pair, frame) with the permuted digits of sample `index` < spp below them.
   std::uint64_t sample_digits(std::uint32_t x, std::uint32_t y, std::uint64_t pixel_part, std::uint64_t index,
-                              const Pair& pair) const noexcept {
-    const std::uint64_t m = morton(x, y) << log2_spp_ | index;
+                              const Pair& pair, std::uint64_t frame = 0) const noexcept {
+    const std::uint64_t m = code(x, y, frame) << log2_spp_ | index;
     const unsigned low = index_bits_ & 1u;  // an odd number of bits: the lowest is a base-2 digit
     std::uint64_t out = pixel_part | permute_digits(m, pair, int(log2_spp_) - 2, int(low));
     if (low) out |= (m & 1u) ^ (mix64((m >> 1) ^ pair.key ^ 0x6c6f77ULL) >> 63);
@@ -132,6 +149,14 @@ class ZSobol {
   static constexpr std::uint64_t morton(std::uint32_t x, std::uint32_t y) noexcept {
     return interleave(x) | (interleave(y) << 1);
   }
+  /// A pixel's code in a frame: its Morton index XOR the frame's low digits,
+  /// the frame's digits past the image's levels above it.
+  std::uint64_t code(std::uint32_t x, std::uint32_t y, std::uint64_t frame) const noexcept {
+    const std::uint64_t mask = (std::uint64_t{1} << (2 * pixel_levels_)) - 1;
+    return (morton(x, y) ^ (frame & mask)) | (frame & ~mask);
+  }
+  /// The frame's digits past the image's levels, placed above the index (unpermuted).
+  std::uint64_t high(std::uint64_t frame) const noexcept { return (frame >> (2 * pixel_levels_)) << index_bits_; }
   /// The base-4 digits of m at shifts top, top − 2, … ≥ bottom, each
   /// permuted by one of the 24 permutations, picked by a hash of the digits
   /// above it, its level and the pair (Lemire's multiply-shift instead of a
@@ -176,6 +201,7 @@ class ZSobol {
   std::uint64_t seed_;
   const Sobol* sobol_;
   unsigned log2_spp_ = 0;
+  unsigned pixel_levels_ = 0;
   unsigned index_bits_ = 0;
 };
 
