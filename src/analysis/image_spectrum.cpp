@@ -113,4 +113,63 @@ std::vector<double> image_power_direct(const std::vector<double>& values, int wi
   return power;
 }
 
+TemporalSpectrum temporal_spectrum(const std::vector<std::vector<double>>& frames, int width, int height) {
+  require(frames.size() >= 9 && frames.size() <= 65536, "frames", frames.size(),
+          "must be 9 to 65536 frames (the lowest frequency 1/F must lie below 1/8 cycle per frame)");
+  require(width >= 1 && height >= 1 && std::size_t(width) * std::size_t(height) <= std::size_t(1) << 28, "size",
+          std::to_string(width) + "x" + std::to_string(height), "must be at least 1x1 and at most 2^28 pixels");
+  const std::size_t f = frames.size(), pixels = std::size_t(width) * std::size_t(height);
+  for (std::size_t t = 0; t < f; ++t) {
+    require(frames[t].size() == pixels, "frames",
+            "frame " + std::to_string(t) + " of " + std::to_string(frames[t].size()) + " values",
+            "must hold width × height = " + std::to_string(pixels) + " values, as every frame");
+    for (std::size_t i = 0; i < pixels; ++i)
+      require(std::isfinite(frames[t][i]), "frames", frames[t][i],
+              "must be finite (frame " + std::to_string(t) + ", pixel " + std::to_string(i) + ")");
+  }
+  TemporalSpectrum result;
+  result.frames = int(f);
+  result.width = width;
+  result.height = height;
+  const std::size_t bins = f / 2;
+  std::vector<double> sum(bins, 0.0);
+  std::vector<Complex> series(f), transformed(f);
+  const kissfft<double> transform(f, false);
+  double sum2 = 0, lag1 = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    double mean = 0;
+    for (std::size_t t = 0; t < f; ++t) mean += frames[t][i];
+    mean /= double(f);
+    for (std::size_t t = 0; t < f; ++t) {
+      series[t] = frames[t][i] - mean;
+      sum2 += std::norm(series[t]);
+      if (t > 0) lag1 += series[t - 1].real() * series[t].real();
+    }
+    transform.transform(series.data(), transformed.data());
+    // Bin k ≥ 1 folds k and F − k (equal for a real series); at k = F/2 (F even) one term.
+    for (std::size_t k = 1; k <= bins; ++k)
+      sum[k - 1] +=
+          2 * k == f ? std::norm(transformed[k]) : (std::norm(transformed[k]) + std::norm(transformed[f - k])) / 2;
+  }
+  require(sum2 > 0, "frames", "frames constant in time",
+          "have no temporal spectrum (every pixel's series is constant)");
+  // Σ_{k≠0} |X_p(k)|² = F Σ_t x_p(t)² (Parseval), so the pooled mean of P over k ≠ 0 is sum2 / (pixels·(F − 1)).
+  const double scale = double(f - 1) / (double(f) * sum2);
+  double low = 0;
+  std::size_t low_count = 0;
+  for (std::size_t k = 1; k <= bins; ++k) {
+    result.frequency.push_back(double(k) / double(f));
+    result.power.push_back(sum[k - 1] * scale);
+    if (8 * k < f) {
+      // both k and F − k count, as in the image's mean over frequencies
+      low += result.power.back();
+      ++low_count;
+    }
+  }
+  result.low_frequency_power = low / double(low_count);
+  result.lag1_correlation = lag1 / sum2;
+  result.variance = sum2 / (double(pixels) * double(f));
+  return result;
+}
+
 }  // namespace stratum::analysis

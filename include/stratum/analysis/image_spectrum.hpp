@@ -42,4 +42,36 @@ ImageSpectrum image_spectrum(const std::vector<double>& values, int width, int h
 /// The same P(k) by the direct O((W·H)²) sum, for tests of the FFT path.
 std::vector<double> image_power_direct(const std::vector<double>& values, int width, int height);
 
+/// The temporal spectrum of a sequence of F frames (each W × H values, e.g.
+/// the luminance error of frame k of an animation): where each pixel's error
+/// goes in time (Wolfe et al. 2022, spatiotemporal blue noise; Heitz &
+/// Belcour 2019). Each pixel's series minus its own mean (its mean error over
+/// the frames, the k = 0 term) is transformed over time, P_p(k) =
+/// |X_p(k)|² / F, and the pixels' P_p(k) averaged and normalized by their
+/// mean over k ≠ 0 (pooled over pixels), so that a series independent from
+/// frame to frame (white in time) has E[P(k)] = 1 at every k ≠ 0.
+struct TemporalSpectrum {
+  int frames = 0, width = 0, height = 0;
+  /// k / F for k = 1 … ⌊F/2⌋ (cycles per frame; k and F − k folded: the
+  /// series are real).
+  std::vector<double> frequency;
+  std::vector<double> power;  ///< mean P(k) over the pixels, normalized as above
+  /// Mean P over 0 < f < ⅛ cycle per frame: 1 white in time, < 1 when a
+  /// pixel's error alternates from frame to frame (blue in time: frames
+  /// averaged cancel), > 1 when it persists (a flicker-free but slowly
+  /// converging, positively correlated sequence).
+  double low_frequency_power = 0;
+  /// Pooled lag-1 autocorrelation Σ_p Σ_t x_p(t)·x_p(t+1) / Σ_p Σ_t x_p(t)²
+  /// of the centred series (t + 1 < F): about −1/F for independent frames
+  /// (the centring), negative when consecutive frames compensate.
+  double lag1_correlation = 0;
+  double variance = 0;  ///< mean over pixels of each pixel's variance over the frames
+};
+
+/// The temporal spectrum of `frames` (each row-major, width × height,
+/// finite). Throws stratum::invalid_argument for fewer than 9 frames (the
+/// first frequency below ⅛ is 1/F), frames of another size than width ×
+/// height, a non-finite value, and for frames constant in time.
+TemporalSpectrum temporal_spectrum(const std::vector<std::vector<double>>& frames, int width, int height);
+
 }  // namespace stratum::analysis
