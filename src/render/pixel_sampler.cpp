@@ -34,7 +34,7 @@ std::uint64_t PixelSampler::set_seed_for_test(std::uint64_t seed, std::uint32_t 
 }
 
 std::uint64_t PixelSampler::array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
-                                                std::uint32_t dimension, std::uint32_t index) noexcept {
+                                                std::uint32_t dimension, std::uint64_t index) noexcept {
   return hash64(hash64(seed, tag_pixel, x, y), tag_array, dimension, index);
 }
 
@@ -65,6 +65,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   };
   const bool continues = has("progressive") || has(frames_continue_property);
   offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
+  arrays_continue_ = has("progressive");
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   if (name == "random" && (r.empty() || r == "none")) fast_ = Fast::random;
   if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;
@@ -86,6 +87,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
   fast_ = other.fast_, sobol_ = other.sobol_, halton_permute_ = other.halton_permute_;
+  arrays_continue_ = other.arrays_continue_;
   halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
   halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
@@ -246,7 +248,7 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
   return {set(index_, 0), set(index_, 1)};
 }
 
-void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n,
+void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::uint64_t start,
                                      std::array<double, 2>* out) {
   if (zsobol_ && std::has_single_bit(n)) {  // other counts: the registry names the bad count below
     const std::uint64_t sequence = zsobol_index(dimension);
@@ -259,13 +261,13 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = ranked_bn_->array_point(sequence_index_, n, i, pair);
     return;
   }
-  if (halton_permute_ && n <= halton_direct_max) {
+  if (halton_permute_ && start + n <= halton_direct_max) {
     HaltonSet set;
-    build_halton_set(seed, n, set);
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(set, i);
+    build_halton_set(seed, start + n, set);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(set, start + i);
     return;
   }
-  const PointSet set = draw(settings_.sampler, n, 2, seed);
+  const PointSet set = draw(settings_.sampler, n, 2, seed, start);  // points start … start + n − 1
   for (std::uint32_t i = 0; i < n; ++i) out[i] = {set(i, 0), set(i, 1)};
 }
 

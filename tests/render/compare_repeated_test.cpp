@@ -56,7 +56,9 @@ TEST(CompareRepeated, RepeatZeroIsThePlainComparisonAndTheSummaryItsRepeats) {
     EXPECT_EQ(four.rows[0][c].mse, plain[c].mse) << "repeat 0 keeps the configuration's seed";
     double sum = 0, log_ratio = 0;
     for (unsigned k = 0; k < 4; ++k) {
-      if (k > 0) EXPECT_NE(four.rows[k][c].mse, four.rows[0][c].mse) << "repeat " << k << " reused the seed";
+      if (k > 0) {
+        EXPECT_NE(four.rows[k][c].mse, four.rows[0][c].mse) << "repeat " << k << " reused the seed";
+      }
       sum += four.rows[k][c].mse;
       log_ratio += std::log(four.rows[k][0].mse / four.rows[k][c].mse);
     }

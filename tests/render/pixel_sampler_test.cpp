@@ -10,6 +10,7 @@
 #include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/render/pixel_sampler.hpp"
 #include "stratum/util/error.hpp"
+#include "../sequences/zero_net.hpp"
 
 namespace stratum::render {
 namespace {
@@ -151,18 +152,52 @@ TEST(PixelSampler, PixelDrawsArePointsOfTheRegistrySetsOfTheirSeeds) {
         const auto q = sampler.get_pixel_2d();
         const PointSet s0 = registry_set(name, 16, PixelSampler::set_seed_for_test(7, x, y, 0));
         const PointSet s1 = registry_set(name, 16, PixelSampler::set_seed_for_test(7, x, y, 1));
-        const PointSet s2 = registry_set(name, 9, PixelSampler::array_seed_for_test(7, x, y, 2, index));
+        // A pattern's array is its own 9-point set; a progressive sampler's is
+        // points 9·index … 9·index + 8 of one set per pixel and dimension.
+        const bool continued = std::string(name) != "jittered";
+        const std::uint32_t first = continued ? 9 * index : 0;
+        const PointSet s2 = registry_set(
+            name, first + 9,
+            PixelSampler::array_seed_for_test(7, x, y, 2, continued ? PixelSampler::tag_continued : index));
         const PointSet s3 = registry_set(name, 16, PixelSampler::set_seed_for_test(7, x, y, 3));
         ASSERT_EQ(t, s0(index, 0)) << name;
         ASSERT_EQ(p[0], s1(index, 0)) << name;
         ASSERT_EQ(p[1], s1(index, 1)) << name;
         for (std::size_t i = 0; i < 9; ++i) {
-          ASSERT_EQ(array[i][0], s2(i, 0)) << name << " " << i;
-          ASSERT_EQ(array[i][1], s2(i, 1)) << name << " " << i;
+          ASSERT_EQ(array[i][0], s2(first + i, 0)) << name << " " << i;
+          ASSERT_EQ(array[i][1], s2(first + i, 1)) << name << " " << i;
         }
         ASSERT_EQ(q[0], s3(index, 0)) << name;
         ASSERT_EQ(q[1], s3(index, 1)) << name;
       }
+  }
+}
+
+TEST(PixelSampler, AProgressiveSamplersArraysOverThePixelsSamplesAreOneNet) {
+  // 4 samples × 4 shadow rays: each array an aligned block of 4 (a
+  // (0,2,2)-net), the 16 together a (0,4,2)-net of the pixel's array
+  // sequence; a pattern's arrays are fresh per sample (only each a set).
+  for (const char* name : {"sobol", "pmj02", "jittered"}) {
+    PixelSampler sampler(settings(name, 4));
+    for (auto [x, y] : {std::pair{0u, 0u}, {6u, 2u}}) {
+      std::vector<std::array<double, 2>> all;
+      for (std::uint32_t index = 0; index < 4; ++index) {
+        sampler.start_pixel_sample(x, y, index);
+        sampler.get_2d();
+        std::array<double, 2> array[4];
+        sampler.get_2d_array(4, array);
+        const std::vector<std::array<double, 2>> one(array, array + 4);
+        if (std::string(name) != "jittered") {
+          EXPECT_TRUE(stratum::testing::is_zero_net(one)) << name << " " << index;
+        }
+        all.insert(all.end(), one.begin(), one.end());
+      }
+      if (std::string(name) != "jittered") {
+        EXPECT_TRUE(stratum::testing::is_zero_net(all)) << name;
+      } else {
+        EXPECT_FALSE(stratum::testing::is_zero_net(all)) << "jittered's arrays were expected independent";
+      }
+    }
   }
 }
 

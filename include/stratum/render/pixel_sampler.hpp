@@ -9,9 +9,16 @@
 /// sequence randomized per pixel and dimension (owen, owen-hash, xor, cp…)
 /// gives independent scrambles, and a pattern (jittered, n-rooks…) a fresh
 /// pattern. Sample `index` of the pixel takes point `index` of each set.
-/// get_2d_array(n) returns n points of their own set, keyed also by the
-/// sample index, so the n shadow rays of one eye ray are stratified among
-/// themselves (LECTURE.md §2).
+/// get_2d_array(n) returns n points stratified among themselves, so the n
+/// shadow rays of one eye ray are (LECTURE.md §2). For a progressive sampler
+/// they continue the pixel's sequence of that array dimension (seed
+/// hash(seed, pixel, array tag, dimension, continued tag)): sample s takes
+/// its points s·n … s·n + n − 1, so the arrays of a pixel's samples (and of
+/// its frames) together are the first spp·n points (sobol, pmj02: each array
+/// an aligned block, itself a net, and all together one). Without that the
+/// arrays of successive samples would be independent and the light
+/// integral plain Monte Carlo whatever the sampler. A pattern draws a fresh
+/// set per sample (the seed also hashes the sample index).
 ///
 /// Frames (LECTURE.md §8, issue "blue-noise error in screen space and
 /// time"): frame K of an animation continues each pixel's sequence. For a
@@ -109,23 +116,25 @@ class PixelSampler {
   }
   /// n points stratified among themselves (n must be a count the sampler takes).
   void get_2d_array(std::uint32_t n, std::array<double, 2>* out) {
-    // seed = hash64(pixel_key_, tag_array, dimension, sequence_index_)
-    const std::uint64_t seed = hash64_extend(array_prefix(dimension_++), sequence_index_);
+    // seed = hash64(pixel_key_, tag_array, dimension, tag_continued or sequence_index_)
+    const std::uint64_t seed =
+        hash64_extend(array_prefix(dimension_++), arrays_continue_ ? tag_continued : sequence_index_);
+    const std::uint64_t start = arrays_continue_ ? sequence_index_ * n : 0;  // < 2^64: both factors < 2^32
     if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
     switch (fast_) {
       case Fast::random:
-        return keyed_points<Fast::random>(set_key(seed), array_root_, n, out);
+        return keyed_points<Fast::random>(set_key(seed), array_root_, start, n, out);
       case Fast::sobol_owen_hash:
-        return keyed_points<Fast::sobol_owen_hash>(set_key(seed), array_root_, n, out);
+        return keyed_points<Fast::sobol_owen_hash>(set_key(seed), array_root_, start, n, out);
       case Fast::jittered:
         if (array_root_ * array_root_ != n) break;  // the registry names the bad count
-        return keyed_points<Fast::jittered>(set_key(seed), array_root_, n, out);
+        return keyed_points<Fast::jittered>(set_key(seed), array_root_, start, n, out);
       case Fast::pmj02:
-        return keyed_points<Fast::pmj02>(set_key(seed), array_root_, n, out);
+        return keyed_points<Fast::pmj02>(set_key(seed), array_root_, start, n, out);
       case Fast::none:
         break;
     }
-    get_2d_array_slow(seed, dimension_ - 1, n, out);
+    get_2d_array_slow(seed, dimension_ - 1, n, start, out);
   }
 
   /// Point set `dimension` of a pixel, as drawn (for tests): the registry's
@@ -133,11 +142,15 @@ class PixelSampler {
   PointSet draw_for_test(std::uint64_t n, std::uint64_t seed) const { return draw(settings_.sampler, n, 2, seed); }
   /// The seed of a pixel's set (for tests; plain hash64, independent of the
   /// cached hash chain the draws use): get_2d/get_1d set `dimension` of pixel
-  /// (x, y) for the settings' seed, and the get_2d_array set of its sample `index`.
+  /// (x, y) for the settings' seed, and the get_2d_array set of its sample
+  /// `index` (a pattern's) or of every sample (a progressive sampler's: pass
+  /// tag_continued as the index).
   static std::uint64_t set_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
                                          std::uint32_t dimension) noexcept;
   static std::uint64_t array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
-                                           std::uint32_t dimension, std::uint32_t index) noexcept;
+                                           std::uint32_t dimension, std::uint64_t index) noexcept;
+  /// The last link of a progressive sampler's array seeds (above any sample index, < 2^32).
+  static constexpr std::uint64_t tag_continued = 0x434f'4e54'494e'5545ULL;
   /// Whether draws take the direct path (see above).
   bool direct() const noexcept { return fast_ != Fast::none; }
 
@@ -151,7 +164,8 @@ class PixelSampler {
                 std::uint64_t start = 0) const;
   /// get_2d off the direct paths; `coordinates` 1: only the first is used.
   std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
-  void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::array<double, 2>* out);
+  void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::uint64_t start,
+                         std::array<double, 2>* out);
 
   /// zsobol (sequences/zsobol.hpp): one sequence over the image, so the
   /// draws need the pixel and the image size, not a per-pixel set; the
@@ -307,8 +321,9 @@ class PixelSampler {
     return {0, 0};
   }
   template <Fast kind>
-  void keyed_points(SetKey key, std::uint64_t root, std::uint32_t n, std::array<double, 2>* out) const noexcept {
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = kind_point<kind, 2>(key, root, i);
+  void keyed_points(SetKey key, std::uint64_t root, std::uint64_t start, std::uint32_t n,
+                    std::array<double, 2>* out) const noexcept {
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = kind_point<kind, 2>(key, root, start + i);
   }
   std::array<double, 2> direct_point(std::uint64_t seed, std::uint64_t root, std::uint64_t index) const noexcept {
     return keyed_point<2>(set_key(seed), root, index);
@@ -333,9 +348,10 @@ class PixelSampler {
   bool direct_for(std::uint64_t n) const noexcept;
 
   PixelSamplerSettings settings_;
-  Fast fast_ = Fast::none;       ///< a direct path for the common samplers
-  bool halton_permute_ = false;  ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
-  std::string spacetime_;        ///< the space-time sampler, or empty
+  Fast fast_ = Fast::none;        ///< a direct path for the common samplers
+  bool halton_permute_ = false;   ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
+  bool arrays_continue_ = false;  ///< a progressive sampler: get_2d_array continues the pixel's sequence (above)
+  std::string spacetime_;         ///< the space-time sampler, or empty
   bool has_spacetime_ = false;
   std::uint64_t pixel_key_ = 0;
   std::uint32_t pixel_x_ = 0, pixel_y_ = 0;
