@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/render/pixel_sampler.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/render/scene.hpp"
@@ -243,6 +244,38 @@ TEST(Frames, ConsecutiveFramesErrorsAreNotPositivelyCorrelated) {
     std::cout << name << " rho " << rho << "\n";
     if (name != "random" && name != "jittered") EXPECT_LT(scaled, z) << name << " rho " << rho;
     else EXPECT_LT(std::abs(scaled), z) << name << " rho " << rho;
+  }
+}
+
+/// The luminance error of frames 0..F−1 at 1 spp on the penumbra scene
+/// (32 × 32, against a 1024-spp reference), as temporal_spectrum takes them.
+std::vector<std::vector<double>> frame_errors(const std::string& sampler, int frames) {
+  Scene scene = penumbra_scene();
+  scene.camera.width = scene.camera.height = 32;
+  RenderSettings s;
+  s.passes = 1;
+  s.sampler = sampler_settings("sobol", 1024, 0);
+  s.sampler.seed = 99;
+  const Image reference = render(scene, s);
+  std::vector<std::vector<double>> out;
+  for (int k = 0; k < frames; ++k) {
+    s.sampler = sampler_settings(sampler, 1, std::uint32_t(k));
+    const Image frame = render(scene, s);
+    std::vector<double> error(reference.rgb.size() / 3);
+    for (std::size_t p = 0; p < error.size(); ++p)
+      for (int c = 0; c < 3; ++c)
+        error[p] +=
+            std::array{0.2126, 0.7152, 0.0722}[std::size_t(c)] * (frame.rgb[3 * p + c] - reference.rgb[3 * p + c]);
+    out.push_back(std::move(error));
+  }
+  return out;
+}
+
+TEST(Frames, APixelsErrorIsBlueInTimeWhenItsSequenceContinues) {
+  for (const std::string name : {"random", "jittered", "sobol", "zsobol", "sobol-bn", "pmj02-bn", "lattice-bn"}) {
+    const auto s = stratum::analysis::temporal_spectrum(frame_errors(name, 32), 32, 32);
+    std::cout << name << " temporal low-frequency power " << s.low_frequency_power << " lag-1 " << s.lag1_correlation
+              << "\n";
   }
 }
 
