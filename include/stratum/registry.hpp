@@ -79,6 +79,8 @@ const std::vector<SamplerInfo>& samplers();
 
 /// The sampler called `name`; throws invalid_argument listing the valid names.
 const SamplerInfo& find_sampler(std::string_view name);
+/// Whether the sampler lists `property` (e.g. "progressive", frames_continue_property).
+bool has_property(const SamplerInfo& sampler, std::string_view property);
 
 /// Validates a request (common checks, then the sampler's own) and throws
 /// stratum::invalid_argument naming what is wrong; returns the resolved

@@ -58,7 +58,7 @@ static std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
-static bool has_property(const SamplerInfo& sampler, const char* property) {
+bool has_property(const SamplerInfo& sampler, std::string_view property) {
   return std::find(sampler.properties.begin(), sampler.properties.end(), property) != sampler.properties.end();
 }
 

@@ -59,13 +59,10 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   draw(settings_.sampler, settings_.spp, 2, 0);  // validates the sampler, randomizer and spp
   const std::string& r = settings_.randomize;
   const std::string& name = settings_.sampler;
-  const std::vector<std::string>& properties = find_sampler(name).properties;
-  const auto has = [&](const char* property) {
-    return std::find(properties.begin(), properties.end(), property) != properties.end();
-  };
-  const bool continues = has("progressive") || has(frames_continue_property);
+  const SamplerInfo& info = find_sampler(name);
+  const bool continues = has_property(info, "progressive") || has_property(info, frames_continue_property);
   offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
-  arrays_continue_ = has("progressive");
+  arrays_continue_ = has_property(info, "progressive");
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   if (name == "random" && (r.empty() || r == "none")) fast_ = Fast::random;
   if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;

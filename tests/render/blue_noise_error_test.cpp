@@ -29,6 +29,19 @@ Scene penumbra_scene() {
   return scene;
 }
 
+/// Its 1024-spp Owen–Sobol' reference (seed 999), rendered once for both tests.
+const Image& penumbra_reference() {
+  static const Image reference = [] {
+    RenderSettings settings;
+    settings.sampler.sampler = "sobol";
+    settings.sampler.spp = 1024;
+    settings.sampler.seed = 999;
+    settings.threads = 2;
+    return render(penumbra_scene(), settings);
+  }();
+  return reference;
+}
+
 double blurred_mse(const std::vector<double>& e, int w, int h) {
   // separable Gaussian, σ = 1 pixel, radius 3, periodic
   double k[7], total = 0;
@@ -52,12 +65,7 @@ double blurred_mse(const std::vector<double>& e, int w, int h) {
 
 TEST(BlueNoiseError, ZSobolAndSobolBnPushTheErrorToHighFrequencies) {
   const Scene scene = penumbra_scene();
-  RenderSettings reference_settings;
-  reference_settings.sampler.sampler = "sobol";
-  reference_settings.sampler.spp = 1024;
-  reference_settings.sampler.seed = 999;
-  reference_settings.threads = 2;
-  const Image reference = render(scene, reference_settings);
+  const Image& reference = penumbra_reference();
   double low[3] = {0, 0, 0}, mse[3] = {0, 0, 0}, blurred[3] = {0, 0, 0};
   const char* names[3] = {"sobol", "zsobol", "sobol-bn"};
   constexpr int seeds = 6;
@@ -94,12 +102,9 @@ TEST(BlueNoiseError, TheQmcSamplersConvergeFasterThanRandomOnThePenumbra) {
   // for the independent arrays of before); asserted < 0.5, random's MSE
   // having a relative standard error ≈ √(2/4096·κ) of a few percent.
   const Scene scene = penumbra_scene();
+  const Image& reference = penumbra_reference();
   RenderSettings settings;
-  settings.sampler.sampler = "sobol";
-  settings.sampler.spp = 1024;
-  settings.sampler.seed = 999;
   settings.threads = 2;
-  const Image reference = render(scene, settings);
   const auto mse_of = [&](const char* name) {
     settings.sampler.sampler = name;
     settings.sampler.spp = 16;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "stratum/analysis/image_spectrum.hpp"
+#include "stratum/render/compare.hpp"
 #include "stratum/render/pixel_sampler.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/render/scene.hpp"
@@ -197,31 +198,43 @@ TEST(Frames, FramesOfAProgressiveSamplerAveragedAreOneRenderAtKTimesSpp) {
   }
 }
 
-/// Pearson's correlation of the two frames' per-pixel errors (luminance
-/// against a 1024-spp reference) at 1 spp on the penumbra scene.
-double error_correlation(const std::string& sampler, std::uint32_t frame_a, std::uint32_t frame_b,
-                         std::size_t* pixels) {
-  Scene scene = penumbra_scene();
-  scene.camera.width = scene.camera.height = 32;
+/// The penumbra scene at 32 × 32 and its 1024-spp Owen–Sobol' reference
+/// (seed 99), rendered once for the tests below.
+const Scene& small_penumbra() {
+  static const Scene scene = [] {
+    Scene s = penumbra_scene();
+    s.camera.width = s.camera.height = 32;
+    return s;
+  }();
+  return scene;
+}
+const Image& penumbra_reference() {
+  static const Image reference = [] {
+    RenderSettings s;
+    s.passes = 1;
+    s.sampler = sampler_settings("sobol", 1024, 0);
+    s.sampler.seed = 99;
+    return render(small_penumbra(), s);
+  }();
+  return reference;
+}
+
+/// The per-pixel luminance error of `sampler`'s frame at 1 spp against that reference.
+std::vector<double> frame_error(const std::string& sampler, std::uint32_t frame) {
   RenderSettings s;
   s.passes = 1;
-  s.sampler = sampler_settings("sobol", 1024, 0);
-  s.sampler.seed = 99;
-  const Image reference = render(scene, s);
-  s.sampler = sampler_settings(sampler, 1, frame_a);
-  const Image a = render(scene, s);
-  s.sampler.frame = frame_b;
-  const Image b = render(scene, s);
-  const auto luminance = [](const std::vector<double>& rgb, std::size_t p) {
-    return 0.2126 * rgb[3 * p] + 0.7152 * rgb[3 * p + 1] + 0.0722 * rgb[3 * p + 2];
-  };
-  const std::size_t n = reference.rgb.size() / 3;
+  s.sampler = sampler_settings(sampler, 1, frame);
+  return luminance_error(render(small_penumbra(), s), penumbra_reference());
+}
+
+/// Pearson's correlation of the two frames' per-pixel errors at 1 spp on the penumbra scene.
+double error_correlation(const std::string& sampler, std::uint32_t frame_a, std::uint32_t frame_b,
+                         std::size_t* pixels) {
+  const std::vector<double> a = frame_error(sampler, frame_a), b = frame_error(sampler, frame_b);
+  const std::size_t n = a.size();
   double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-  for (std::size_t p = 0; p < n; ++p) {
-    const double ea = luminance(a.rgb, p) - luminance(reference.rgb, p);
-    const double eb = luminance(b.rgb, p) - luminance(reference.rgb, p);
-    sa += ea, sb += eb, saa += ea * ea, sbb += eb * eb, sab += ea * eb;
-  }
+  for (std::size_t p = 0; p < n; ++p)
+    sa += a[p], sb += b[p], saa += a[p] * a[p], sbb += b[p] * b[p], sab += a[p] * b[p];
   *pixels = n;
   const double cov = sab / n - (sa / n) * (sb / n);
   return cov / std::sqrt((saa / n - (sa / n) * (sa / n)) * (sbb / n - (sb / n) * (sb / n)));
@@ -247,27 +260,10 @@ TEST(Frames, ConsecutiveFramesErrorsAreNotPositivelyCorrelated) {
   }
 }
 
-/// The luminance error of frames 0..F−1 at 1 spp on the penumbra scene
-/// (32 × 32, against a 1024-spp reference), as temporal_spectrum takes them.
+/// The luminance error of frames 0..F−1 at 1 spp, as temporal_spectrum takes them.
 std::vector<std::vector<double>> frame_errors(const std::string& sampler, int frames) {
-  Scene scene = penumbra_scene();
-  scene.camera.width = scene.camera.height = 32;
-  RenderSettings s;
-  s.passes = 1;
-  s.sampler = sampler_settings("sobol", 1024, 0);
-  s.sampler.seed = 99;
-  const Image reference = render(scene, s);
   std::vector<std::vector<double>> out;
-  for (int k = 0; k < frames; ++k) {
-    s.sampler = sampler_settings(sampler, 1, std::uint32_t(k));
-    const Image frame = render(scene, s);
-    std::vector<double> error(reference.rgb.size() / 3);
-    for (std::size_t p = 0; p < error.size(); ++p)
-      for (int c = 0; c < 3; ++c)
-        error[p] +=
-            std::array{0.2126, 0.7152, 0.0722}[std::size_t(c)] * (frame.rgb[3 * p + c] - reference.rgb[3 * p + c]);
-    out.push_back(std::move(error));
-  }
+  for (int k = 0; k < frames; ++k) out.push_back(frame_error(sampler, std::uint32_t(k)));
   return out;
 }
 

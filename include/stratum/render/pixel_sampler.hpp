@@ -149,7 +149,7 @@ class PixelSampler {
                                          std::uint32_t dimension) noexcept;
   static std::uint64_t array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
                                            std::uint32_t dimension, std::uint64_t index) noexcept;
-  /// The last link of a progressive sampler's array seeds (above any sample index, < 2^32).
+  /// The last link of a progressive sampler's array seeds: above 2^32, so no sample index equals it.
   static constexpr std::uint64_t tag_continued = 0x434f'4e54'494e'5545ULL;
   /// Whether draws take the direct path (see above).
   bool direct() const noexcept { return fast_ != Fast::none; }
