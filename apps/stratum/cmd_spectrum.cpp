@@ -30,7 +30,8 @@ struct SpectrumOptions : SamplerOptions {
   std::optional<std::int64_t> n, max_frequency;
   std::int64_t realizations = 1, threads = 0;
   bool json = false;
-  std::string image, reference;  ///< --image: the spectrum of an image (or of image − reference)
+  std::string image, reference;     ///< --image: the spectrum of an image (or of image − reference)
+  std::vector<std::string> frames;  ///< --frames: the temporal spectrum of an animation's frames
 };
 
 std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
@@ -68,6 +69,16 @@ std::vector<PointSet> load_realizations(const SpectrumOptions& o) {
   return sets;
 }
 
+#ifdef STRATUM_HAS_RENDER
+/// The luminance of `image`, or of image − reference (sizes checked).
+std::vector<double> luminance_values(const render::Image& image, const std::optional<render::Image>& reference) {
+  if (reference) return render::luminance_error(image, *reference);
+  render::Image black = image;
+  std::fill(black.rgb.begin(), black.rgb.end(), 0.0);
+  return render::luminance_error(image, black);
+}
+#endif
+
 /// `spectrum --image`: where an image's variation (a render's error) goes
 /// in frequency (analysis/image_spectrum.hpp), of its luminance, or of the
 /// luminance of image − reference.
@@ -78,14 +89,9 @@ void run_image_spectrum(const SpectrumOptions& o) {
   if (!o.png.empty())
     throw invalid_argument("--output", o.png, "draws point-set spectra; for --image use --json (radial power)");
   const render::Image image = render::read_image(o.image);
-  std::vector<double> values;
-  if (!o.reference.empty()) {
-    values = render::luminance_error(image, render::read_image(o.reference));
-  } else {
-    render::Image black = image;
-    std::fill(black.rgb.begin(), black.rgb.end(), 0.0);
-    values = render::luminance_error(image, black);
-  }
+  std::optional<render::Image> reference;
+  if (!o.reference.empty()) reference = render::read_image(o.reference);
+  const std::vector<double> values = luminance_values(image, reference);
   const sa::ImageSpectrum s = sa::image_spectrum(values, image.width, image.height);
   nlohmann::json power = nlohmann::json::array();
   for (double p : s.radial_power) power.push_back(std::isfinite(p) ? nlohmann::json(p) : nullptr);
@@ -114,7 +120,65 @@ void run_image_spectrum(const SpectrumOptions& o) {
 #endif
 }
 
+/// `spectrum --frames`: where each pixel's variation (a render's error)
+/// goes in time over an animation's frames (analysis::temporal_spectrum), of
+/// the luminance. No reference: each pixel's mean over the frames is removed,
+/// so the error's spectrum equals the luminance's.
+void run_temporal_spectrum(const SpectrumOptions& o) {
+#ifdef STRATUM_HAS_RENDER
+  if (!o.files.empty() || !o.sampler.empty() || !o.image.empty())
+    throw invalid_argument("--frames", o.frames.front(),
+                           "measures frames alone: give no point FILEs, no --sampler and no --image");
+  if (!o.png.empty()) throw invalid_argument("--output", o.png, "draws point-set spectra; for --frames use --json");
+  if (o.frames.size() < 9)
+    throw invalid_argument("--frames", std::to_string(o.frames.size()) + " files",
+                           "needs at least 9 frames (the lowest frequency 1/F must lie below 1/8 cycle per frame)");
+  if (!o.reference.empty())
+    throw invalid_argument("--reference", o.reference,
+                           "does not apply to --frames: each pixel's mean over the frames is removed, so a "
+                           "reference would cancel");
+  std::vector<std::vector<double>> values;
+  int width = 0, height = 0;
+  for (const auto& file : o.frames) {
+    const render::Image frame = render::read_image(file);
+    if (values.empty()) {
+      width = frame.width;
+      height = frame.height;
+    } else if (frame.width != width || frame.height != height) {
+      throw invalid_argument("--frames", file,
+                             fmt::format("is {}x{}; every frame must have the size of the first, {}x{}", frame.width,
+                                         frame.height, width, height));
+    }
+    values.push_back(luminance_values(frame, std::nullopt));
+  }
+  const sa::TemporalSpectrum s = sa::temporal_spectrum(values, width, height);
+  const nlohmann::json data = {{"frames", o.frames},
+                               {"width", s.width},
+                               {"height", s.height},
+                               {"variance", s.variance},
+                               {"low_frequency_power", s.low_frequency_power},
+                               {"lag1_correlation", s.lag1_correlation},
+                               {"temporal", {{"frequency", s.frequency}, {"power", s.power}}}};
+  if (o.json) {
+    fmt::print("{}\n", data.dump(2));
+    return;
+  }
+  fmt::print("# temporal spectrum of each pixel's luminance over {} frames ({}x{}), white in time = 1\n", s.frames,
+             s.width, s.height);
+  fmt::print("low_frequency_power {:.6g}   (mean below 1/8 cycle per frame; < 1: blue in time)\n",
+             s.low_frequency_power);
+  fmt::print("lag1_correlation    {:.6g}   (consecutive frames; about -1/F when independent)\n", s.lag1_correlation);
+  fmt::print("variance            {:.6g}\n", s.variance);
+  fmt::print("# {:>10} {:>12}\n", "cycles/frame", "power");
+  for (std::size_t k = 0; k < s.power.size(); ++k) fmt::print("  {:>12.5f} {:>12.6g}\n", s.frequency[k], s.power[k]);
+#else
+  throw invalid_argument("--frames", o.frames.front(),
+                         "needs the renderer's image reader (a build with STRATUM_BUILD_RENDER)");
+#endif
+}
+
 void run_spectrum(const SpectrumOptions& o) {
+  if (!o.frames.empty()) return run_temporal_spectrum(o);
   if (!o.image.empty()) return run_image_spectrum(o);
   if (!o.reference.empty()) throw invalid_argument("--reference", o.reference, "applies only to --image");
   const auto figure = plot::prepare_plot("output", o.png);  // checked before the work
@@ -186,6 +250,9 @@ void add_spectrum_command(CLI::App& app) {
   command->add_flag("--json", o->json, "print JSON (with the full periodogram `power`, row-major, ky then kx)");
   command->add_option("--image", o->image,
                       "instead: the power spectrum of an image's luminance (.exr, .png, ...), e.g. a render's error");
+  command->add_option("--frames", o->frames,
+                      "instead: the temporal spectrum of frames F0 F1 ... (at least 9 images of one size): where "
+                      "each pixel's luminance (its error) goes in time");
   command->add_option("--reference", o->reference, "with --image: the spectrum of image - reference");
   command->callback([o] { run_spectrum(*o); });
 }

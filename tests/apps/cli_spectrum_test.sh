@@ -119,4 +119,35 @@ expect_error "for --image use --json" spectrum --image "$tmp/zsobol.exr" -o "$tm
 [ ! -e "$tmp/fig.png" ] && ok || fail "a refused --image run wrote its figure"
 expect_error "no-such.exr" spectrum --image "$tmp/no-such.exr"
 
+# --- spectrum --frames: where a pixel's error goes in time ----------------------------------
+# 16 frames at 1 spp: random's frames are independent (white in time, ~1.0),
+# sobol-bn's frames continue each pixel's sequence (blue in time, ~0.43).
+for s in random sobol-bn; do
+  frames=()
+  for k in $(seq 0 15); do
+    "$stratum" render "$scene" --width 32 --height 32 --spp 1 --sampler $s --seed 3 --frame $k --quiet \
+      -o "$tmp/$s-$k.png" --exr "$tmp/$s-$k.exr" || fail "render $s frame $k"
+    frames+=("$tmp/$s-$k.exr")
+  done
+  "$stratum" spectrum --frames "${frames[@]}" --json >"$tmp/$s-time.json" && ok || fail "spectrum --frames $s"
+done
+/usr/bin/python3 - "$tmp/random-time.json" "$tmp/sobol-bn-time.json" <<'EOF' && ok || fail "temporal spectra: $(head -c 300 "$tmp/sobol-bn-time.json")"
+import json, sys
+white, blue = (json.load(open(p)) for p in sys.argv[1:3])
+assert blue["width"] == 32 and blue["height"] == 32 and len(blue["frames"]) == 16, blue.keys()
+assert blue["temporal"]["frequency"] == [k / 16 for k in range(1, 9)], blue["temporal"]["frequency"]
+# the pooled mean of P over k != 0 is 1 by construction (k and 16 - k folded: k = 8 counts once)
+p = blue["temporal"]["power"]
+assert abs((2 * sum(p[:7]) + p[7]) / 15 - 1) < 1e-12, p
+assert white["low_frequency_power"] > 0.75 and blue["low_frequency_power"] < 0.65, (white["low_frequency_power"], blue["low_frequency_power"])
+assert blue["lag1_correlation"] < white["lag1_correlation"] - 0.05, (white["lag1_correlation"], blue["lag1_correlation"])
+EOF
+"$stratum" spectrum --frames "${frames[@]}" >"$tmp/text" && grep -q "^lag1_correlation" "$tmp/text" && ok \
+  || fail "spectrum --frames text: $(head -3 "$tmp/text")"
+expect_error "needs at least 9 frames" spectrum --frames "${frames[@]:0:8}"
+expect_error "every frame must have the size of the first, 32x32" spectrum --frames "${frames[@]:0:9}" "$tmp/small.exr"
+expect_error "a reference would cancel" spectrum --frames "${frames[@]}" --reference "$tmp/ref.exr"
+expect_error "measures frames alone" spectrum --frames "${frames[@]}" --image "$tmp/zsobol.exr"
+expect_error "for --frames use --json" spectrum --frames "${frames[@]}" -o "$tmp/fig.png"
+
 finish
