@@ -44,6 +44,25 @@ py::dict image_spectrum(const Array& values) {
       py::arg("radial") = py::dict(py::arg("frequency") = s.radial_frequency, py::arg("power") = s.radial_power));
 }
 
+/// image_spectrum.hpp's temporal spectrum of an (F, H, W) array of frames.
+py::dict temporal_spectrum(const Array& values) {
+  if (values.ndim() != 3)
+    throw invalid_argument("frames", "an array of " + std::to_string(values.ndim()) + " dimensions",
+                           "must have shape (frames, height, width) (or (frames, height, width, 3): luminance)");
+  const auto frames = static_cast<std::size_t>(values.shape(0));
+  const auto pixels = static_cast<std::size_t>(values.shape(1) * values.shape(2));
+  std::vector<std::vector<double>> copy(frames);
+  for (std::size_t t = 0; t < frames; ++t) copy[t].assign(values.data() + t * pixels, values.data() + (t + 1) * pixels);
+  sa::TemporalSpectrum s;
+  {
+    InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
+    s = sa::temporal_spectrum(copy, static_cast<int>(values.shape(2)), static_cast<int>(values.shape(1)));
+  }
+  return py::dict(py::arg("frequency") = s.frequency, py::arg("power") = s.power,
+                  py::arg("low_frequency_power") = s.low_frequency_power,
+                  py::arg("lag1_correlation") = s.lag1_correlation, py::arg("variance") = s.variance);
+}
+
 /// analysis/blue_noise.hpp: the key file's bytes and the per-pair energies.
 py::tuple optimize_blue_noise(const std::string& base, const std::string& structure, std::uint32_t size,
                               std::uint32_t dims, std::uint64_t seed, std::uint32_t max_spp, std::uint32_t integrands,
@@ -122,6 +141,7 @@ py::dict pair_correlation(const Array& x, const std::vector<double>& radii, doub
 void bind_spectra(py::module_& m) {
   m.def("_spectrum", &spectrum, py::arg("realizations"), py::arg("max_frequency"), py::arg("threads"));
   m.def("_image_spectrum", &image_spectrum, py::arg("values"));
+  m.def("_temporal_spectrum", &temporal_spectrum, py::arg("values"));
   m.def("_optimize_blue_noise", &optimize_blue_noise, py::arg("base"), py::arg("structure"), py::arg("size"),
         py::arg("dims"), py::arg("seed"), py::arg("max_spp"), py::arg("integrands"), py::arg("sweeps"));
   m.def("_pair_correlation", &pair_correlation, py::arg("x"), py::arg("radii"), py::arg("sigma"), py::arg("threads"));

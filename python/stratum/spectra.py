@@ -23,7 +23,7 @@ import numpy as np
 from . import _checks, _stratum
 from ._stratum import InvalidArgument
 
-__all__ = ["spectrum", "pair_correlation", "image_spectrum", "optimize_blue_noise"]
+__all__ = ["spectrum", "pair_correlation", "image_spectrum", "temporal_spectrum", "optimize_blue_noise"]
 
 
 def _realizations(x) -> np.ndarray:
@@ -68,6 +68,31 @@ def image_spectrum(image, reference=None) -> dict:
         values = values @ np.array([0.2126, 0.7152, 0.0722])
     result = _stratum._image_spectrum(np.ascontiguousarray(values))
     result["radial"] = {key: np.asarray(value) for key, value in result["radial"].items()}
+    return result
+
+
+def temporal_spectrum(frames) -> dict:
+    """The temporal spectrum of an animation's frames (docs/blue-noise.md):
+    where each pixel's value (its error) goes in time. ``frames`` has shape
+    (F, H, W), or (F, H, W, 3) for the luminance (Rec. 709 weights), F >= 9,
+    or is a list of F such images. Each pixel's series minus its mean is
+    transformed over time and the pixels pooled, normalized so that frames
+    independent in time have power 1 at every frequency but 0. Returns
+    ``frequency`` (k / F cycles per frame, k = 1 .. F // 2), ``power``,
+    ``low_frequency_power`` (mean below 1/8 cycle per frame: 1 white, < 1
+    blue in time), ``lag1_correlation`` (of consecutive frames) and
+    ``variance``, as ``stratum spectrum --frames``. A reference image is not
+    needed: it would cancel with each pixel's mean."""
+    if isinstance(frames, (list, tuple)):
+        shapes = {np.shape(frame) for frame in frames}
+        if len(shapes) > 1:
+            raise InvalidArgument(f"invalid frames = images of shapes {sorted(shapes)}: all must have one shape")
+    values = _checks.real_array("frames", frames, "an array of shape (F, H, W) or (F, H, W, 3), or a list of images")
+    if values.ndim == 4 and values.shape[3] == 3:
+        values = values @ np.array([0.2126, 0.7152, 0.0722])
+    result = _stratum._temporal_spectrum(np.ascontiguousarray(values))
+    for key in ("frequency", "power"):
+        result[key] = np.asarray(result[key])
     return result
 
 

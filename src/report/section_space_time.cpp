@@ -15,6 +15,7 @@
 #include "render_support.hpp"
 #include "repeated_comparison.hpp"
 #include "sections.hpp"
+#include "space_time_frames.hpp"
 #include "stratum/spacetime/cook_pattern.hpp"
 #include "stratum/spacetime/magic_square.hpp"
 
@@ -186,13 +187,6 @@ void screen_space_error(SectionContext& context, Section& section) {
       format_number(section.numbers["screen_space_error"]["rows"][rows[0].label]["blurred_mse"].get<double>()),
       format_number(section.numbers["screen_space_error"]["rows"][rows[1].label]["blurred_mse"].get<double>()),
       format_number(section.numbers["screen_space_error"]["rows"][rows[2].label]["blurred_mse"].get<double>())));
-  section.text.push_back(
-      "Across frames of an animation (stratum render --frame K) the same rule runs in time: a progressive sampler's "
-      "frame K takes each pixel's next block of spp samples of its sequence, so frames 0…K−1 together are "
-      "exactly one frame at K·spp (tested) and converge as the sequence does, while patterns and the blue-noise "
-      "samplers take a fresh seed per frame (independent frames). Cook's and the magic square's assignment, nearby in "
-      "space and far apart in time within one pixel's "
-      "set, is the special case of one frame.");
 }
 
 /// The field of view of the close-up of the moving sphere.
@@ -401,10 +395,13 @@ Section space_time_section(SectionContext& context) {
       "quoted only where the paired time ratio's interval excludes 1 ({}). Intervals: {}.",
       timing, method));
   screen_space_error(context, section);
+  frames_error(context, section);
   section.try_it = {
       "stratum compare --builtin time-pattern --width 64 --height 64",
       "stratum render scenes/penumbra.json --sampler zsobol --spp 1 --exr z.exr && stratum render "
-      "scenes/penumbra.json --reference --exr ref.exr && stratum spectrum --image z.exr --reference ref.exr"};
+      "scenes/penumbra.json --reference --exr ref.exr && stratum spectrum --image z.exr --reference ref.exr",
+      "for k in $(seq 0 15); do stratum render scenes/penumbra.json --sampler sobol-bn --spp 1 --frame $k --exr "
+      "f$k.exr; done && stratum spectrum --frames f{0..15}.exr"};
   return section;
 }
 
