@@ -29,5 +29,13 @@ check tests/CMakeLists.txt tests/apps '*_test.sh'
 while read -r file; do  # the gtests, in every folder of tests/
   grep -qF -- "${file#tests/}" tests/CMakeLists.txt || { echo "check-sources: $file is not listed in tests/CMakeLists.txt" >&2; missing=1; }
 done < <(git ls-files -- 'tests/*_test.cpp')
+# The core's include tree holds the header-only core alone (DESIGN.md: "nothing in core reads up"):
+# a library's headers live in src/<library>/include, so no program that uses
+# only stratum::core sees them on its include path.
+while read -r file; do
+  echo "check-sources: $file is in the core's include tree but not in a core folder (sequences, patterns," \
+    "randomizers, warps, estimators, spacetime, util): a library header goes to src/<library>/include" >&2
+  missing=1
+done < <(git ls-files -- include | grep -vE '^include/stratum/(sequences|patterns|randomizers|warps|estimators|spacetime|util)/[^/]+\.hpp$' || true)
 [ "$missing" = 0 ] && echo "check-sources: every source is listed in its CMake file"
 exit "$missing"

@@ -1,5 +1,5 @@
 /// Integration with registry samplers and convergence studies; see
-/// include/stratum/analysis/convergence.hpp.
+/// src/analysis/include/stratum/analysis/convergence.hpp.
 #include "stratum/analysis/convergence.hpp"
 
 #include <tbb/blocked_range.h>

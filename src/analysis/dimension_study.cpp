@@ -1,5 +1,5 @@
 /// Quadrature versus Monte Carlo as the dimension grows: see
-/// include/stratum/analysis/dimension_study.hpp.
+/// src/analysis/include/stratum/analysis/dimension_study.hpp.
 #include "stratum/analysis/dimension_study.hpp"
 
 #include <oneapi/tbb/blocked_range.h>

@@ -1,5 +1,5 @@
 /// Importance-sampling studies (LECTURE.md §3): see
-/// include/stratum/analysis/importance_study.hpp.
+/// src/analysis/include/stratum/analysis/importance_study.hpp.
 #include "stratum/analysis/importance_study.hpp"
 
 #include <oneapi/tbb/parallel_for.h>

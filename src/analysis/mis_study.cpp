@@ -1,4 +1,4 @@
-/// Multiple importance sampling study: see include/stratum/analysis/mis_study.hpp.
+/// Multiple importance sampling study: see src/analysis/include/stratum/analysis/mis_study.hpp.
 #include "stratum/analysis/mis_study.hpp"
 
 #include <oneapi/tbb/parallel_for.h>

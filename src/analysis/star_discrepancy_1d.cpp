@@ -1,5 +1,5 @@
 // The 1D star discrepancy in closed form and the dispatch to the exact method
-// for each d (see include/stratum/analysis/star_discrepancy.hpp).
+// for each d (see src/analysis/include/stratum/analysis/star_discrepancy.hpp).
 #include <algorithm>
 #include <cmath>
 #include <string>

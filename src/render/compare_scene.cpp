@@ -1,5 +1,5 @@
 /// The scenes of comparisons and their fingerprints (cache keys of
-/// references, include/stratum/render/compare.hpp).
+/// references, src/render/include/stratum/render/compare.hpp).
 #include <bit>
 #include <cstdio>
 

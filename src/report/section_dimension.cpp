@@ -4,7 +4,7 @@
 /// falls as N^(−r/d) (the lecture's N^(−1/d) for r = 1; the midpoint rule
 /// has r = 2), while Monte Carlo's RMSE is σ/√N in every dimension
 /// (Metropolis & Ulam 1949, "The Monte Carlo method"). The study itself is
-/// analysis::run_dimension_study (include/stratum/analysis/dimension_study.hpp).
+/// analysis::run_dimension_study (src/analysis/include/stratum/analysis/dimension_study.hpp).
 #include <fmt/core.h>
 
 #include <algorithm>

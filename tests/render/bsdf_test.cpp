@@ -1,4 +1,4 @@
-// The renderer's BSDFs (include/stratum/render/bsdf.hpp): the glossy lobe's
+// The renderer's BSDFs (src/render/include/stratum/render/bsdf.hpp): the glossy lobe's
 // sampling against its pdf (χ²), sample/pdf/eval consistency, and energy
 // conservation of the normalized Phong lobe against quadrature.
 #include <gtest/gtest.h>

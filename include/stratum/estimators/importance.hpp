@@ -3,7 +3,7 @@
 /// Y = f(X)/p(X); E[Y] = ∫ f whenever p > 0 wherever f ≠ 0, and V[Y] = 0 when
 /// p ∝ f (Kahn and Marshall 1953, "Methods of reducing sample size in Monte
 /// Carlo computations"; Veach 1997, thesis §2.5.2). Works for any (sample,
-/// pdf) pair, e.g. the output of a warp (include/stratum/warp_registry.hpp).
+/// pdf) pair, e.g. the output of a warp (src/registry/include/stratum/warp_registry.hpp).
 #include <cmath>
 #include <cstddef>
 #include <span>

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "stratum/registry.hpp"  // PointSet
+#include "stratum/util/point_set.hpp"
 
 namespace stratum::io {
 

@@ -13,16 +13,11 @@
 #include <vector>
 
 #include "stratum/registry/params.hpp"
+#include "stratum/util/point_set.hpp"
 
 namespace stratum::analysis {
 
-/// n points of d coordinates, row-major, borrowed from the caller.
-struct PointView {
-  const double* data = nullptr;
-  std::size_t n = 0;
-  std::size_t d = 0;
-  double operator()(std::size_t i, std::size_t j) const { return data[i * d + j]; }
-};
+using stratum::PointView;  ///< n points of d coordinates, borrowed (stratum/util/point_set.hpp)
 
 struct MeasureRequest {
   std::map<std::string, std::string> params;  ///< measure-specific, as text ("lines=10000")

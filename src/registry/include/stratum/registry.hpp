@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "stratum/registry/params.hpp"
+#include "stratum/util/point_set.hpp"
 
 namespace stratum {
 
@@ -34,15 +35,6 @@ struct SamplerRequest {
   /// filled in) by validate_request and generate_points; entries read
   /// their parameters here.
   ParamValues values{};
-};
-
-/// n points of d coordinates, row-major; the buffer is handed to numpy or a
-/// writer without a copy.
-struct PointSet {
-  std::size_t n = 0;
-  std::size_t d = 0;
-  std::unique_ptr<double[]> data;
-  double operator()(std::size_t i, std::size_t j) const { return data[i * d + j]; }
 };
 
 /// The property of pixel samplers (zsobol, sobol-bn, …) whose point set is

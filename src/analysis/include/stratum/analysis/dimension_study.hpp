@@ -71,7 +71,7 @@ std::vector<std::string> dimension_integrand_names();
 /// The integrand `name` in d dimensions. "sine-product": Π_j (π/2) sin(π x_j),
 /// integral 1, variance (π²/8)^d − 1; its midpoint sums have the closed form
 /// (π / (2m sin(π/(2m))))^d. The smooth families of the integrand registry
-/// (include/stratum/analysis/integrands.hpp: genz-oscillatory, genz-product-peak,
+/// (src/analysis/include/stratum/analysis/integrands.hpp: genz-oscillatory, genz-product-peak,
 /// genz-corner-peak, genz-gaussian) are accepted by name with their default
 /// parameters; their variance is left unknown.
 DimensionIntegrand dimension_integrand(std::string_view name, unsigned d);

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "stratum/registry.hpp"
+#include "stratum/util/point_set.hpp"
 
 namespace stratum::io {
 
