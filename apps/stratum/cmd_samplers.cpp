@@ -12,6 +12,12 @@
 
 namespace stratum::cli {
 
+static nlohmann::json flags_json(const SamplerFlags& flags) {
+  return {{"index_addressable", flags.index_addressable}, {"progressive", flags.progressive},
+          {"frames_continue", flags.frames_continue},     {"self_randomized", flags.self_randomized},
+          {"zero_two_net", flags.zero_two_net},           {"prefix_unbiased", flags.prefix_unbiased}};
+}
+
 static nlohmann::json sampler_json(const SamplerInfo& s) {
   const nlohmann::json params = params_json(s.params);
   return {{"name", s.name},
@@ -19,7 +25,8 @@ static nlohmann::json sampler_json(const SamplerInfo& s) {
           {"description", s.description},
           {"min_dim", s.min_dim},
           {"max_dim", s.max_dim},
-          {"properties", s.properties},
+          {"flags", flags_json(s.flags)},
+          {"properties", property_words(s)},
           {"randomizers", s.randomizers},
           {"counts", s.counts},
           {"params", params}};
@@ -43,7 +50,7 @@ void add_samplers_command(CLI::App& app) {
     fmt::print("{:<18} {:<9} {:<10} {:<34} {}\n", "name", "kind", "dims", "randomize (default first)", "properties");
     for (const auto& s : samplers())
       fmt::print("{:<18} {:<9} {:<10} {:<34} {}\n", s.name, s.kind, fmt::format("{}-{}", s.min_dim, s.max_dim),
-                 fmt::format("{}", fmt::join(s.randomizers, ",")), fmt::join(s.properties, "; "));
+                 fmt::format("{}", fmt::join(s.randomizers, ",")), fmt::join(property_words(s), "; "));
   });
 }
 

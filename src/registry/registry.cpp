@@ -58,8 +58,24 @@ static std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
-bool has_property(const SamplerInfo& sampler, std::string_view property) {
-  return std::find(sampler.properties.begin(), sampler.properties.end(), property) != sampler.properties.end();
+std::vector<std::string> property_words(const SamplerInfo& sampler) {
+  const SamplerFlags& flags = sampler.flags;
+  std::vector<std::string> words;
+  if (flags.index_addressable) words.emplace_back("index-addressable");
+  if (flags.progressive) words.emplace_back("progressive");
+  if (flags.frames_continue) words.emplace_back(frames_continue_property);
+  if (flags.self_randomized) words.emplace_back("self-randomized");
+  if (flags.zero_two_net) words.emplace_back("(0,m,2)-net in base 2 in dimensions 0-1 at every n = 2^m");
+  if (!flags.prefix_unbiased.empty())
+    words.push_back("each point uniform on its own (" + join(flags.prefix_unbiased) + "): any prefix unbiased");
+  words.insert(words.end(), sampler.properties.begin(), sampler.properties.end());
+  return words;
+}
+
+bool prefix_unbiased(const SamplerInfo& sampler, std::string_view randomize) {
+  const std::string_view resolved = randomize.empty() ? std::string_view(sampler.randomizers.front()) : randomize;
+  const auto& list = sampler.flags.prefix_unbiased;
+  return std::find(list.begin(), list.end(), resolved) != list.end();
 }
 
 std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& request) {
@@ -74,9 +90,8 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   if (request.radius)
     require(*request.radius > 0 && *request.radius <= 1, "radius", *request.radius, "must be in (0, 1]");
   if (request.start != 0)
-    require(sampler.kind == "sequence" || has_property(sampler, "progressive") ||
-                has_property(sampler, frames_continue_property),
-            "start", request.start,
+    require(sampler.kind == "sequence" || sampler.flags.progressive || sampler.flags.frames_continue, "start",
+            request.start,
             sampler.name +
                 " is a finite pattern; only sequences, progressive samplers (random) and pixel samplers "
                 "(zsobol, sobol-bn, pmj02-bn, lattice-bn: a later frame) can start past index 0");

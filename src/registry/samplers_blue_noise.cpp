@@ -78,6 +78,7 @@ SamplerInfo ranked_entry(const RankedEntry& e) {
           name + " uses it per pixel",
       .min_dim = 1,
       .max_dim = blue_noise_max_dims(base),
+      .flags = {.frames_continue = true, .self_randomized = true},
       .properties = e.properties,
       .randomizers = {"owen-hash"},
       .counts = "n = spp, 1 to 2^24 (powers of two give the base's 2^m-point structure per pixel)",
@@ -101,20 +102,19 @@ SamplerInfo ranked_entry(const RankedEntry& e) {
 
 std::vector<SamplerInfo> blue_noise() {
   return {
-      ranked_entry({BlueNoiseBase::sobol,
-                    "Owen-scrambled Sobol' sequence",
-                    {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
-                     "blue-noise error across pixels (the tile's dimensions)", frames_continue_property}}),
-      ranked_entry({BlueNoiseBase::pmj02,
-                    "digital PMJ02 (0,2)-sequence (Helmer et al. 2021's generator matrices) under a hash-based Owen "
-                    "scramble, pmj02's kind of point sets,",
-                    {"(0,m,2)-net per pixel in each dimension pair", "self-randomized",
-                     "blue-noise error across pixels (the tile's dimensions)", frames_continue_property}}),
       ranked_entry(
-          {BlueNoiseBase::lattice,
-           "randomly shifted rank-1 lattice sequence (lattice's default generating vector)",
-           {"randomly shifted rank-1 lattice per pixel", "Latin in every coordinate per pixel", "self-randomized",
-            "blue-noise error across pixels (the tile's dimensions)", frames_continue_property}}),
+          {BlueNoiseBase::sobol,
+           "Owen-scrambled Sobol' sequence",
+           {"(0,m,2)-net per pixel in each dimension pair", "blue-noise error across pixels (the tile's dimensions)"}}),
+      ranked_entry(
+          {BlueNoiseBase::pmj02,
+           "digital PMJ02 (0,2)-sequence (Helmer et al. 2021's generator matrices) under a hash-based Owen "
+           "scramble, pmj02's kind of point sets,",
+           {"(0,m,2)-net per pixel in each dimension pair", "blue-noise error across pixels (the tile's dimensions)"}}),
+      ranked_entry({BlueNoiseBase::lattice,
+                    "randomly shifted rank-1 lattice sequence (lattice's default generating vector)",
+                    {"randomly shifted rank-1 lattice per pixel", "Latin in every coordinate per pixel",
+                     "blue-noise error across pixels (the tile's dimensions)"}}),
   };
 }
 

@@ -26,7 +26,8 @@ std::vector<SamplerInfo> pmj() {
           "(2t, 2t+1) are further independent pmj02 pairs, index-shuffled within each power-of-two block",
       .min_dim = 1,
       .max_dim = Pmj02::max_dimensions,
-      .properties = {"index-addressable", "progressive", "(0,2)-sequence", "multi-jittered"},
+      .flags = {.index_addressable = true, .progressive = true, .self_randomized = true, .zero_two_net = true},
+      .properties = {"(0,2)-sequence", "multi-jittered"},
       .randomizers = {"none"},  // its own seeded randomness: a new seed is a new Owen-scrambled realization
       .counts = "any n >= 1 (every power-of-two prefix is a (0,k,2)-net)",
       .params = {},
@@ -51,7 +52,8 @@ std::vector<SamplerInfo> pmj() {
           "also spread apart (blue noise within the set, unlike sobol-bn/pmj02-bn's blue noise across pixels)",
       .min_dim = 1,
       .max_dim = 2,
-      .properties = {"progressive", "(0,2)-sequence", "multi-jittered", "blue noise (within the point set)"},
+      .flags = {.progressive = true, .self_randomized = true, .zero_two_net = true},
+      .properties = {"(0,2)-sequence", "multi-jittered", "blue noise (within the point set)"},
       .randomizers = {"none"},  // its own seeded randomness, as pmj02
       .counts = "any n >= 1 with start + n <= 2^31 (points are placed one after another: start + n are made)",
       .params = {params::integer("candidates",

@@ -101,6 +101,7 @@ std::vector<SamplerInfo> poisson() {
           "maximal Poisson-disk set: Bridson 2007 dart throwing, completed to maximal after Ebeida et al. 2012",
       .min_dim = 1,
       .max_dim = PoissonDisk::max_dimensions,
+      .flags = {.self_randomized = true},
       .properties = {"blue noise", "minimum distance >= radius", "maximal (radius alone)"},
       .randomizers = {"none"},
       .counts = "radius alone: the maximal set (its size follows from the radius); n alone: exactly n points "
@@ -122,6 +123,7 @@ std::vector<SamplerInfo> poisson() {
       .description = "Mitchell's best-candidate pattern: point i is the best of k*i uniform candidates (Mitchell 1991)",
       .min_dim = 1,
       .max_dim = BestCandidate::max_dimensions,
+      .flags = {.self_randomized = true},
       .properties = {"blue noise", "progressive (every prefix is a best-candidate set)"},
       .randomizers = {"none"},
       .counts = "any n >= 1 with candidates*n*(n-1)/2 <= 2^27 (d <= 2), 2^25 (d = 3), 2^23 (d = 4): "

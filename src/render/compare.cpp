@@ -309,14 +309,15 @@ Image reference_image(const Scene& scene, const std::string& scene_key, const Re
 
 namespace {
 
-/// Samplers each of whose points is uniformly distributed on its own
-/// (independent points; Owen-scrambled Sobol', Owen 1997, "Scrambled net
-/// variance for integrals of smooth functions"), so any prefix of a pixel's
-/// set is an unbiased estimate and equal-time passes may continue one set.
+/// Whether equal-time passes may continue one progressive set and stop
+/// after any pass: the sampler is progressive and each of its points is
+/// uniform on its own under the randomizer (the registry's typed flags,
+/// SamplerFlags::prefix_unbiased; Owen 1997, "Scrambled net variance for
+/// integrals of smooth functions"), so any prefix of a pixel's set is an
+/// unbiased estimate. A time pattern draws whole space-time sets.
 bool prefix_unbiased(const PixelSamplerSettings& s) {
-  const bool plain = s.randomize.empty();
-  return s.time_pattern.empty() && ((s.sampler == "random" && (plain || s.randomize == "none")) ||
-                                    (s.sampler == "sobol" && (plain || s.randomize == "owen-hash")));
+  const SamplerInfo& sampler = find_sampler(s.sampler);
+  return s.time_pattern.empty() && sampler.flags.progressive && stratum::prefix_unbiased(sampler, s.randomize);
 }
 
 /// Samples per pixel of one progressive set in equal-time rendering.

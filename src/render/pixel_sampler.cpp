@@ -60,9 +60,9 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   const std::string& r = settings_.randomize;
   const std::string& name = settings_.sampler;
   const SamplerInfo& info = find_sampler(name);
-  const bool continues = has_property(info, "progressive") || has_property(info, frames_continue_property);
+  const bool continues = info.flags.progressive || info.flags.frames_continue;
   offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
-  arrays_continue_ = has_property(info, "progressive");
+  arrays_continue_ = info.flags.progressive;
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   if (name == "random" && (r.empty() || r == "none")) fast_ = Fast::random;
   if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;

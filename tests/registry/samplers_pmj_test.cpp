@@ -26,8 +26,12 @@ TEST(SamplersPmj, EntryDescribesItself) {
   const SamplerInfo& info = find_sampler("pmj02");
   EXPECT_EQ(info.kind, "sequence");
   EXPECT_EQ(info.randomizers, std::vector<std::string>{"none"});
+  EXPECT_TRUE(info.flags.index_addressable);
+  EXPECT_TRUE(info.flags.progressive);
+  EXPECT_TRUE(info.flags.zero_two_net);
+  const std::vector<std::string> words = property_words(info);
   for (const char* p : {"index-addressable", "progressive", "(0,2)-sequence", "multi-jittered"})
-    EXPECT_NE(std::find(info.properties.begin(), info.properties.end(), p), info.properties.end()) << p;
+    EXPECT_NE(std::find(words.begin(), words.end(), p), words.end()) << p;
   EXPECT_NE(info.description.find("Owen"), std::string::npos);
   SamplerRequest request;
   request.n = 16;

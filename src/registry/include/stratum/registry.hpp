@@ -37,9 +37,38 @@ struct SamplerRequest {
   ParamValues values{};
 };
 
-/// The property of pixel samplers (zsobol, sobol-bn, …) whose point set is
-/// one pixel's spp samples and whose `start` continues that pixel's sequence
-/// (render --frame K reads samples K·spp … (K+1)·spp − 1).
+/// What code may rely on about a sampler: typed flags, queried without
+/// string matching (DESIGN.md); SamplerInfo::properties says the rest in
+/// words. Each flag is checked against the sampler's points by
+/// tests/registry/sampler_flags_test.cpp.
+struct SamplerFlags {
+  /// Point i is computed alone from (seed, i, dimension), without its predecessors.
+  bool index_addressable = false;
+  /// Every prefix of the randomized sequence is the sampler's set of that
+  /// size, so `start` continues it: points [start, start + n) of a seed are
+  /// rows start … start + n − 1 of the set of start + n points.
+  bool progressive = false;
+  /// A pixel sampler (one pixel's spp samples: zsobol, sobol-bn, …) whose
+  /// `start` continues that pixel's sequence (render --frame K reads samples
+  /// K·spp … (K+1)·spp − 1).
+  bool frames_continue = false;
+  /// Its construction draws from the seed: even under randomizer none, a
+  /// new seed gives a new set (jittered, pmj02, zsobol, …; n-queens where
+  /// its search, not the formula, places the queens). Without the flag the
+  /// construction is deterministic and only a randomizer uses the seed.
+  bool self_randomized = false;
+  /// Dimensions 0 and 1 form a (0,m,2)-net in base 2 at every n = 2^m (one
+  /// point in every elementary interval of area 1/n), under each randomizer
+  /// it accepts but cp (a rotation breaks the intervals).
+  bool zero_two_net = false;
+  /// The randomizers under which each point is uniform in [0,1)^d on its own,
+  /// so a prefix of a pixel's set is an unbiased estimate (Owen 1997): the
+  /// renderer's equal-time passes may stop a progressive set anywhere. Listed
+  /// where the renderer relies on it.
+  std::vector<std::string> prefix_unbiased;
+};
+
+/// The words SamplerInfo::properties uses for SamplerFlags, in listings.
 inline constexpr const char* frames_continue_property = "start continues the pixel's sequence (frames)";
 
 struct SamplerInfo {
@@ -48,7 +77,8 @@ struct SamplerInfo {
   std::string description;
   unsigned min_dim = 1;
   unsigned max_dim = 1;
-  std::vector<std::string> properties;
+  SamplerFlags flags{};
+  std::vector<std::string> properties;   ///< in words, beside the flags (listings: property_words)
   std::vector<std::string> randomizers;  ///< accepted values of --randomize; front() is the default
   std::string counts;                    ///< which n the sampler takes, in words
   bool n_optional = false;               ///< may n be left out (then `radius` decides)?
@@ -71,8 +101,11 @@ const std::vector<SamplerInfo>& samplers();
 
 /// The sampler called `name`; throws invalid_argument listing the valid names.
 const SamplerInfo& find_sampler(std::string_view name);
-/// Whether the sampler lists `property` (e.g. "progressive", frames_continue_property).
-bool has_property(const SamplerInfo& sampler, std::string_view property);
+/// The sampler's flags in words, then its other properties: what the
+/// listings (`stratum samplers`, Python's samplers()) print.
+std::vector<std::string> property_words(const SamplerInfo& sampler);
+/// Whether a randomizer (empty: the sampler's default) keeps each point uniform (SamplerFlags::prefix_unbiased).
+bool prefix_unbiased(const SamplerInfo& sampler, std::string_view randomize);
 
 /// Validates a request (common checks, then the sampler's own) and throws
 /// stratum::invalid_argument naming what is wrong; returns the resolved
