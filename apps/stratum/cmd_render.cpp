@@ -122,7 +122,9 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--hemisphere", s.hemisphere, "irradiance sampling: uniform|cosine")->capture_default_str();
   command->add_option("--max-depth", s.max_depth, "longest path")->capture_default_str();
-  add_sampler_options(*command, options->sampler, "the pixel sampler (a registry sampler that takes spp points in 2D)",
+  add_sampler_options(*command, options->sampler,
+                      "the pixel sampler: any registry sampler that takes spp points (latin-square: its first two "
+                      "coordinates; the space-time patterns are --time-pattern)",
                       "seed")
       ->capture_default_str();
   command->add_option("--time-pattern", s.sampler.time_pattern, "random|cook|magic-square (spp = m^2)");

@@ -15,7 +15,8 @@ namespace stratum::cli {
 static nlohmann::json flags_json(const SamplerFlags& flags) {
   return {{"index_addressable", flags.index_addressable}, {"progressive", flags.progressive},
           {"frames_continue", flags.frames_continue},     {"self_randomized", flags.self_randomized},
-          {"zero_two_net", flags.zero_two_net},           {"prefix_unbiased", flags.prefix_unbiased}};
+          {"zero_two_net", flags.zero_two_net},           {"space_time", flags.space_time},
+          {"prefix_unbiased", flags.prefix_unbiased}};
 }
 
 static nlohmann::json sampler_json(const SamplerInfo& s) {

@@ -28,7 +28,8 @@ py::list sampler_list() {
     const stratum::SamplerFlags& f = s.flags;
     const py::dict flags(py::arg("index_addressable") = f.index_addressable, py::arg("progressive") = f.progressive,
                          py::arg("frames_continue") = f.frames_continue, py::arg("self_randomized") = f.self_randomized,
-                         py::arg("zero_two_net") = f.zero_two_net, py::arg("prefix_unbiased") = f.prefix_unbiased);
+                         py::arg("zero_two_net") = f.zero_two_net, py::arg("space_time") = f.space_time,
+                         py::arg("prefix_unbiased") = f.prefix_unbiased);
     list.append(py::dict(py::arg("name") = s.name, py::arg("kind") = s.kind, py::arg("description") = s.description,
                          py::arg("min_dim") = s.min_dim, py::arg("max_dim") = s.max_dim, py::arg("flags") = flags,
                          py::arg("properties") = stratum::property_words(s), py::arg("randomizers") = s.randomizers,

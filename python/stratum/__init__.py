@@ -40,7 +40,7 @@ def __getattr__(name):
 def samplers() -> list[dict]:
     """Every sampler: name, kind, description, min_dim, max_dim, flags
     (index_addressable, progressive, frames_continue, self_randomized,
-    zero_two_net: booleans; prefix_unbiased: the randomizers under which each
+    zero_two_net, space_time: booleans; prefix_unbiased: the randomizers under which each
     point is uniform on its own), properties (the flags and the rest in
     words), randomizers (default first), counts (which n it takes) and params."""
     return _stratum.samplers()

@@ -13,6 +13,28 @@ def test_samplers_lists_registry_entries():
         assert s["randomizers"], s["name"]
 
 
+def test_samplers_flags_are_typed_and_hold():
+    # The typed flags (docs/samplers.md): booleans and a list of randomizers,
+    # the same as `stratum samplers --json`; progressive samplers continue
+    # their sequence at start, the others refuse a start unless they are
+    # sequences or pixel samplers.
+    keys = {"index_addressable", "progressive", "frames_continue", "self_randomized", "zero_two_net", "space_time"}
+    progressive = 0
+    for s in stratum.samplers():
+        flags = s["flags"]
+        assert keys <= set(flags), s["name"]
+        assert all(isinstance(flags[k], bool) for k in keys), s["name"]
+        assert set(flags["prefix_unbiased"]) <= set(s["randomizers"]), s["name"]
+        if flags["progressive"]:
+            assert "progressive" in s["properties"], s["name"]
+            d = min(max(2, s["min_dim"]), s["max_dim"])
+            whole = stratum.points(s["name"], 32, d, seed=4)
+            assert np.array_equal(stratum.points(s["name"], 16, d, seed=4, start=16), whole[16:]), s["name"]
+            progressive += 1
+    assert progressive >= 8
+    assert stratum.samplers()[[s["name"] for s in stratum.samplers()].index("sobol")]["flags"]["prefix_unbiased"]
+
+
 def test_points_shape_dtype_and_values():
     x = stratum.points("halton", 6, 3, randomize="none")
     assert x.shape == (6, 3) and x.dtype == np.float64

@@ -65,6 +65,7 @@ std::vector<std::string> property_words(const SamplerInfo& sampler) {
   if (flags.progressive) words.emplace_back("progressive");
   if (flags.frames_continue) words.emplace_back(frames_continue_property);
   if (flags.self_randomized) words.emplace_back("self-randomized");
+  if (flags.space_time) words.emplace_back("space-time pattern (x, y, t): render --time-pattern");
   if (flags.zero_two_net) words.emplace_back("(0,m,2)-net in base 2 in dimensions 0-1 at every n = 2^m");
   if (!flags.prefix_unbiased.empty())
     words.push_back("each point uniform on its own (" + join(flags.prefix_unbiased) + "): any prefix unbiased");

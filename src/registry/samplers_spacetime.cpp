@@ -40,7 +40,7 @@ SamplerInfo spacetime_entry(std::string name, std::string description, std::vect
       .description = std::move(description),
       .min_dim = 3,
       .max_dim = 3,
-      .flags = {.self_randomized = true},
+      .flags = {.self_randomized = true, .space_time = true},
       .properties = std::move(properties),
       .randomizers = {"none"},
       .counts = std::move(counts),

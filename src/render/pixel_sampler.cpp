@@ -56,10 +56,18 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
                              "time-pattern " + settings_.time_pattern + " needs spp = m^2 strata (" + e.what() + ")");
     }
   }
-  draw(settings_.sampler, settings_.spp, 2, 0);  // validates the sampler, randomizer and spp
   const std::string& r = settings_.randomize;
   const std::string& name = settings_.sampler;
   const SamplerInfo& info = find_sampler(name);
+  if (info.flags.space_time)
+    throw invalid_argument("sampler", name,
+                           "is a space-time pattern (x, y, t) that draws film positions and times together: give it "
+                           "as --time-pattern random, cook or magic-square (Python time_pattern=) beside a pixel "
+                           "sampler");
+  // A sampler defined from 3 dimensions on (latin-square: an orthogonal
+  // array, every 2D projection one point per cell) gives each pair its first two.
+  sampler_dims_ = std::max(2u, info.min_dim);
+  draw(settings_.sampler, settings_.spp, 2, 0);  // validates the sampler, randomizer and spp
   const bool continues = info.flags.progressive || info.flags.frames_continue;
   offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
   arrays_continue_ = info.flags.progressive;
@@ -84,7 +92,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
   fast_ = other.fast_, sobol_ = other.sobol_, halton_permute_ = other.halton_permute_;
-  arrays_continue_ = other.arrays_continue_;
+  arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
   halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
   halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
@@ -186,7 +194,7 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
   }
   SamplerRequest request;
   request.n = n;
-  request.d = d;
+  request.d = sampler == settings_.sampler ? std::max(d, sampler_dims_) : d;
   request.seed = seed;
   request.start = start;
   request.randomize = sampler == settings_.sampler ? settings_.randomize : "";
@@ -221,6 +229,47 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   PointSet& set = sets_[dimension];
   if (set.n == 0) set = draw(settings_.sampler, settings_.spp, 2, hash64(pixel_key_, dimension), offset_);
   return set;
+}
+
+std::uint64_t PixelSampler::zsobol_index_miss(std::uint32_t dimension) {
+  while (zsobol_pairs_.size() <= dimension) zsobol_pairs_.push_back(zsobol_->pair(std::uint32_t(zsobol_pairs_.size())));
+  if (zsobol_stamps_.size() <= dimension) {
+    zsobol_stamps_.resize(dimension + 1, 0), zsobol_pixel_digits_.resize(dimension + 1);
+    zsobol_blocks_.resize(dimension + 1, ~std::uint64_t{0}), zsobol_block_digits_.resize(dimension + 1);
+  }
+  const ZSobol::Pair& pair = zsobol_pairs_[dimension];
+  if (zsobol_stamps_[dimension] != pixel_stamp_) {
+    const std::uint64_t block =
+        (std::uint64_t{pixel_y_ >> zsobol_block_levels} << 32) | (pixel_x_ >> zsobol_block_levels);
+    if (zsobol_blocks_[dimension] != block) {
+      zsobol_block_digits_[dimension] =
+          zsobol_->block_digits(pixel_x_, pixel_y_, pair, zsobol_block_levels, settings_.frame);
+      zsobol_blocks_[dimension] = block;
+    }
+    zsobol_pixel_digits_[dimension] = zsobol_->pixel_digits(pixel_x_, pixel_y_, pair, zsobol_block_digits_[dimension],
+                                                            zsobol_block_levels, settings_.frame);
+    if (settings_.spp <= zsobol_table_max) {
+      const std::size_t first = std::size_t{dimension} * settings_.spp;
+      if (zsobol_sample_digits_.size() < first + settings_.spp) zsobol_sample_digits_.resize(first + settings_.spp);
+      zsobol_->sample_digit_table(pixel_x_, pixel_y_, pair, settings_.frame, zsobol_sample_digits_.data() + first);
+    }
+    zsobol_stamps_[dimension] = pixel_stamp_;
+  }
+  if (settings_.spp <= zsobol_table_max)
+    return zsobol_pixel_digits_[dimension] | zsobol_sample_digits_[std::size_t{dimension} * settings_.spp + index_];
+  return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair, settings_.frame);
+}
+
+const RankedBlueNoise::PixelPair& PixelSampler::ranked_bn_pair_miss(std::uint32_t dimension) {
+  while (ranked_bn_shared_.size() <= dimension)
+    ranked_bn_shared_.push_back(ranked_bn_->shared_pair(std::uint32_t(ranked_bn_shared_.size())));
+  if (ranked_bn_stamps_.size() <= dimension)
+    ranked_bn_stamps_.resize(dimension + 1, 0), ranked_bn_pixel_.resize(dimension + 1);
+  if (ranked_bn_stamps_[dimension] != pixel_stamp_) {
+    ranked_bn_pixel_[dimension] = ranked_bn_->pixel_pair(pixel_x_, pixel_y_, dimension, ranked_bn_shared_[dimension]);
+    ranked_bn_stamps_[dimension] = pixel_stamp_;
+  }
+  return ranked_bn_pixel_[dimension];
 }
 
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {

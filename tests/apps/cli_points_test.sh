@@ -6,6 +6,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1"
 
 "$stratum" samplers | grep -q '^halton ' && ok || fail "samplers lists halton"
 "$stratum" samplers --json | /usr/bin/python3 -c 'import json,sys; d=json.load(sys.stdin); assert any(s["name"]=="halton" for s in d["samplers"])' && ok || fail "samplers --json"
+# the typed flags beside the words: sobol is progressive, spacetime-cook a space-time pattern, jittered neither
+"$stratum" samplers --json | /usr/bin/python3 -c 'import json,sys; f={s["name"]: s["flags"] for s in json.load(sys.stdin)["samplers"]}; assert f["sobol"]["progressive"] and f["sobol"]["prefix_unbiased"] == ["owen-hash"]; assert f["spacetime-cook"]["space_time"]; assert not f["jittered"]["progressive"] and not f["jittered"]["space_time"]' && ok || fail "samplers --json flags"
 
 lines=$("$stratum" points --sampler halton -n 100 -d 3 | wc -l)
 [ "$lines" = 100 ] && ok || fail "points prints 100 lines, got $lines"

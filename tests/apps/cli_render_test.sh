@@ -75,5 +75,11 @@ expect_error "reference-spp" render --reference --reference-spp 0 -o "$tmp/x.png
 "$stratum" render --width 8 --height 8 --spp 4 -q -o "$tmp/v.png" --variance "$tmp/v.exr" && [ -s "$tmp/v.exr" ] && ok || fail "--variance"
 expect_error "variance" render --width 8 --height 8 --spp 1 -o "$tmp/x.png" --variance "$tmp/v.png"
 [ ! -e "$tmp/x.png" ] && ok || fail "a refused --variance left x.png"
+# every registry sampler drives the renderer or is refused with the reason: latin-square (3-D) renders,
+# a space-time pattern is a --time-pattern
+"$stratum" render --width 8 --height 8 --spp 16 --sampler latin-square -q -o "$tmp/latin.png" && [ -s "$tmp/latin.png" ] &&
+  ok || fail "render --sampler latin-square"
+expect_error "time-pattern" render --width 8 --height 8 --spp 16 --sampler spacetime-cook -q -o "$tmp/st.png"
+[ ! -e "$tmp/st.png" ] && ok || fail "a refused space-time sampler left st.png"
 
 finish

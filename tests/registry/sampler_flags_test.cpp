@@ -55,6 +55,10 @@ TEST(SamplerFlags, AgreeWithTheRandomizersEachSamplerAccepts) {
       EXPECT_TRUE(accepts(s, "none")) << s.name << " is a deterministic construction: it must accept none";
     for (const std::string& r : s.flags.prefix_unbiased) EXPECT_TRUE(accepts(s, r)) << s.name << " " << r;
     if (s.flags.frames_continue) EXPECT_FALSE(s.flags.progressive) << s.name << ": a pixel sampler's start is a frame";
+    if (s.flags.space_time) {
+      EXPECT_EQ(s.min_dim, 3u) << s.name << ": (x, y, t)";
+      EXPECT_EQ(s.max_dim, 3u) << s.name << ": (x, y, t)";
+    }
   }
 }
 
@@ -89,7 +93,8 @@ TEST(SamplerFlags, OnlyProgressiveSamplersSequencesAndPixelSamplersTakeAStart) {
     if (takes_start) {
       EXPECT_NO_THROW(validate_request(s, request)) << s.name;
       if (s.flags.frames_continue)  // a later frame of the pixel: other points
-        EXPECT_FALSE(same_bits(sampler_points(s.name, *n, request.d, "", 3, *n), sampler_points(s.name, *n, request.d, "", 3)))
+        EXPECT_FALSE(
+            same_bits(sampler_points(s.name, *n, request.d, "", 3, *n), sampler_points(s.name, *n, request.d, "", 3)))
             << s.name;
     } else {
       EXPECT_THROW(validate_request(s, request), invalid_argument) << s.name;
@@ -110,7 +115,8 @@ TEST(SamplerFlags, SelfRandomizedSamplersChangeWithTheSeedDeterministicOnesDoNot
       ASSERT_TRUE(m) << s.name;
       EXPECT_TRUE(same_bits(sampler_points(s.name, *m, d, "none", 1), sampler_points(s.name, *m, d, "none", 2)))
           << s.name << " under none depends on the seed: it is self-randomized";
-      if (s.randomizers.front() != "none") EXPECT_TRUE(seeds_differ) << s.name << "'s default randomizer ignores the seed";
+      if (s.randomizers.front() != "none")
+        EXPECT_TRUE(seeds_differ) << s.name << "'s default randomizer ignores the seed";
     }
   }
 }
@@ -170,8 +176,8 @@ TEST(SamplerFlags, UnderAPrefixUnbiasedRandomizerEachPointIsUniform) {
           const double v = sampler_points(c.sampler, 16, 2, c.randomize, 7000 + seed)(i, j);
           x.push_back(v), x2.push_back(v * v);
         }
-        const std::string what = c.sampler + ":" + c.randomize + " point " + std::to_string(i) + " coordinate " +
-                                 std::to_string(j);
+        const std::string what =
+            c.sampler + ":" + c.randomize + " point " + std::to_string(i) + " coordinate " + std::to_string(j);
         testing::expect_unbiased(what + " mean", x, 0.5, alpha);
         testing::expect_unbiased(what + " second moment", x2, 1.0 / 3.0, alpha);
       }

@@ -257,6 +257,68 @@ TEST(PixelSampler, HaltonZeroImagesEqualTheRule) {
   if (!halton_zero_images_vectorized()) GTEST_LOG_(INFO) << "no AVX-512DQ here: only the portable copy was tested";
 }
 
+TEST(PixelSampler, EverySamplerDrivesTheRendererOrIsRefusedWithTheReason) {
+  // Every registry sampler at a count it takes: the space-time patterns are
+  // refused, naming --time-pattern; every other one draws each dimension
+  // pair from its registry set (the set's first two coordinates), in [0,1).
+  int driven = 0;
+  for (const SamplerInfo& info : samplers()) {
+    const unsigned d = std::max(2u, info.min_dim);
+    std::uint32_t spp = 0;
+    for (std::uint32_t n : {16u, 64u}) {
+      SamplerRequest request;
+      request.n = n;
+      request.d = d;
+      try {
+        validate_request(info, request);
+        spp = n;
+        break;
+      } catch (const invalid_argument&) {
+      }
+    }
+    ASSERT_NE(spp, 0u) << info.name << " takes none of the counts tried";
+    if (info.flags.space_time) {
+      try {
+        PixelSampler sampler(settings(info.name, spp));
+        ADD_FAILURE() << info.name << " is accepted as a pixel sampler";
+      } catch (const invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("--time-pattern"), std::string::npos) << e.what();
+      }
+      continue;
+    }
+    PixelSampler sampler(settings(info.name, spp));
+    ++driven;
+    for (std::uint32_t index : {0u, spp - 1}) {
+      sampler.start_pixel_sample(3, 2, index);
+      const auto p = sampler.get_2d();
+      std::array<double, 2> array[4];
+      sampler.get_2d_array(4, array);
+      for (double v : {p[0], p[1], array[0][0], array[3][1], sampler.get_1d()}) {
+        EXPECT_GE(v, 0.0) << info.name;
+        EXPECT_LT(v, 1.0) << info.name;
+      }
+      if (sampler.direct() || info.flags.frames_continue || info.name == "halton") continue;  // tested above
+      SamplerRequest request;  // the registry's set of pixel (3, 2)'s dimension 0
+      request.n = spp;
+      request.d = d;
+      request.seed = PixelSampler::set_seed_for_test(7, 3, 2, 0);
+      const PointSet set = generate_points(info.name, request);
+      EXPECT_EQ(p[0], set(index, 0)) << info.name;
+      EXPECT_EQ(p[1], set(index, 1)) << info.name;
+    }
+  }
+  EXPECT_GE(driven, 25);
+  // latin-square (an orthogonal array of strength 2): a pixel's 16 samples
+  // put one point in every cell of the 4 × 4 grid of each dimension pair.
+  PixelSampler latin(settings("latin-square", 16));
+  std::vector<std::array<double, 2>> points;
+  for (std::uint32_t index = 0; index < 16; ++index) {
+    latin.start_pixel_sample(1, 1, index);
+    points.push_back(latin.get_2d());
+  }
+  EXPECT_TRUE(one_per_stratum(points, 4));
+}
+
 TEST(PixelSampler, OtherSamplersGoThroughTheRegistry) {
   EXPECT_FALSE(PixelSampler(settings("halton", 16)).direct());
   PixelSamplerSettings owen = settings("sobol", 16);

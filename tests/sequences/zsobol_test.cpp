@@ -76,6 +76,27 @@ TEST(ZSobol, TheIndexMapIsABijection) {
   }
 }
 
+TEST(ZSobol, TheSampleDigitTableIsEachSamplesDigits) {
+  // Odd and even index widths (the lone base-2 digit), frames past the
+  // image's digits, spp from 1 to 256.
+  for (std::uint32_t resolution : {1u, 6u, 16u, 100u})
+    for (std::uint64_t spp : {1u, 2u, 4u, 8u, 16u, 32u, 256u}) {
+      const ZSobol z(resolution, spp, 5);
+      for (std::uint32_t p : {0u, 3u}) {
+        const auto pair = z.pair(p);
+        std::vector<std::uint64_t> table(spp);
+        for (auto [x, y] : {std::pair{0u, 0u}, {resolution - 1, resolution / 2}})
+          for (std::uint64_t frame : {0ull, 1ull, 77777ull}) {
+            z.sample_digit_table(x, y, pair, frame, table.data());
+            for (std::uint64_t i = 0; i < spp; ++i)
+              ASSERT_EQ(table[i], z.sample_digits(x, y, 0, i, pair, frame))
+                  << "resolution " << resolution << " spp " << spp << " pixel " << x << "," << y << " frame " << frame
+                  << " sample " << i;
+          }
+      }
+    }
+}
+
 TEST(ZSobol, BlockDigitsComposeToThePixelDigits) {
   for (std::uint32_t resolution : {1u, 5u, 16u, 100u, 4096u})
     for (std::uint64_t spp : {1u, 2u, 32u}) {

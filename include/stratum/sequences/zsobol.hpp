@@ -124,6 +124,34 @@ class ZSobol {
     return out;
   }
 
+  /// sample_digits(x, y, 0, i, pair, frame) for every sample i < spp of a
+  /// pixel at once, into out[0 … spp): the digits of one level share a
+  /// permutation per value of the digits above them, so the table costs about
+  /// spp/3 hashes (5 at 16 spp) instead of one per digit of every sample (32);
+  /// a renderer fills it once per pixel and pair.
+  void sample_digit_table(std::uint32_t x, std::uint32_t y, const Pair& pair, std::uint64_t frame,
+                          std::uint64_t* out) const noexcept {
+    const std::uint64_t spp = samples_per_pixel(), pixel = code(x, y, frame) << log2_spp_;
+    for (std::uint64_t i = 0; i < spp; ++i) out[i] = 0;
+    const unsigned low = index_bits_ & 1u;
+    for (int shift = int(log2_spp_) - 2; shift >= int(low); shift -= 2) {
+      const std::uint64_t span = std::uint64_t{1} << shift;  // indices sharing one digit value below a prefix
+      for (std::uint64_t prefix = 0; prefix < (spp >> (shift + 2)); ++prefix) {
+        const std::uint64_t above = (pixel | (prefix << (shift + 2))) >> (shift + 2);
+        const auto& permutation = permutation_of(above, pair, shift);
+        std::uint64_t* block = out + (prefix << (shift + 2));
+        for (std::uint64_t digit = 0; digit < 4; ++digit)
+          for (std::uint64_t rest = 0; rest < span; ++rest)
+            block[(digit << shift) | rest] |= std::uint64_t{permutation[digit]} << shift;
+      }
+    }
+    if (low)
+      for (std::uint64_t i = 0; i < spp; i += 2) {
+        const std::uint64_t flip = mix64(((pixel | i) >> 1) ^ pair.key ^ 0x6c6f77ULL) >> 63;
+        out[i] |= flip, out[i + 1] |= 1u ^ flip;
+      }
+  }
+
   /// Point `sequence` of a pair: Sobol' dimensions 0 and 1 with the pair's Owen scrambles.
   std::array<double, 2> point(std::uint64_t sequence, const Pair& pair) const noexcept {
     return {sobol_->sample(sequence, 0, pair.x), sobol_->sample(sequence, 1, pair.y)};
@@ -163,13 +191,14 @@ class ZSobol {
   /// modulo: a division per digit would cost more than the hash).
   static std::uint64_t permute_digits(std::uint64_t m, const Pair& pair, int top, int bottom) noexcept {
     std::uint64_t out = 0;
-    for (int shift = top; shift >= bottom; shift -= 2) {
-      const std::uint64_t digit = (m >> shift) & 3u;
-      const std::uint64_t h = mix64((m >> (shift + 2)) ^ pair.key ^ (std::uint64_t(shift) << 58));
-      const auto& permutation = permutations()[((h >> 32) * 24) >> 32];
-      out |= std::uint64_t{permutation[digit]} << shift;
-    }
+    for (int shift = top; shift >= bottom; shift -= 2)
+      out |= std::uint64_t{permutation_of(m >> (shift + 2), pair, shift)[(m >> shift) & 3u]} << shift;
     return out;
+  }
+  /// The permutation of the digit at `shift` whose higher digits are `above` (m >> (shift + 2)).
+  static const std::array<std::uint8_t, 4>& permutation_of(std::uint64_t above, const Pair& pair, int shift) noexcept {
+    const std::uint64_t h = mix64(above ^ pair.key ^ (std::uint64_t(shift) << 58));
+    return permutations()[((h >> 32) * 24) >> 32];
   }
   /// The bits of v at even positions (x → x0 0 x1 0 …), for 16-bit v.
   static constexpr std::uint64_t interleave(std::uint64_t v) noexcept {

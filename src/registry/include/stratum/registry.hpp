@@ -61,11 +61,14 @@ struct SamplerFlags {
   /// point in every elementary interval of area 1/n), under each randomizer
   /// it accepts but cp (a rotation breaks the intervals).
   bool zero_two_net = false;
+  /// An (x, y, t) pattern whose third coordinate is time (spacetime-random,
+  /// -cook, -magic): the renderer takes it as a time pattern, not as a pixel sampler.
+  bool space_time = false;
   /// The randomizers under which each point is uniform in [0,1)^d on its own,
   /// so a prefix of a pixel's set is an unbiased estimate (Owen 1997): the
   /// renderer's equal-time passes may stop a progressive set anywhere. Listed
   /// where the renderer relies on it.
-  std::vector<std::string> prefix_unbiased;
+  std::vector<std::string> prefix_unbiased{};
 };
 
 /// The words SamplerInfo::properties uses for SamplerFlags, in listings.

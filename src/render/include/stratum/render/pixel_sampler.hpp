@@ -98,10 +98,14 @@ class PixelSampler {
   // and a switch cost as much as the hashing), the others out of line.
   double get_1d() {
     if (fast_ != Fast::none) return keyed_point<1>(dimension_key(dimension_++), spp_root_, sequence_index_)[0];
+    if (zsobol_) return zsobol_point(dimension_++)[0];
+    if (ranked_bn_) return ranked_bn_point(dimension_++)[0];
     return get_2d_slow(1)[0];
   }
   std::array<double, 2> get_2d() {
     if (fast_ != Fast::none) return keyed_point<2>(dimension_key(dimension_++), spp_root_, sequence_index_);
+    if (zsobol_) return zsobol_point(dimension_++);
+    if (ranked_bn_) return ranked_bn_point(dimension_++);
     return get_2d_slow();
   }
   /// The film position within the pixel, in [0,1)².
@@ -180,28 +184,24 @@ class PixelSampler {
   std::uint64_t pixel_stamp_ = 0;
   static constexpr unsigned zsobol_block_levels = 4;
   /// The sequence index of this pixel's current sample in `dimension`'s pair.
+  /// Sample `index_` of this pixel in `dimension`'s pair (its sequence index
+  /// under the pixel's digit permutations): a table read once the pixel's
+  /// digits of that pair are built (zsobol_index_miss, once per pixel and pair).
   std::uint64_t zsobol_index(std::uint32_t dimension) {
-    while (zsobol_pairs_.size() <= dimension)
-      zsobol_pairs_.push_back(zsobol_->pair(std::uint32_t(zsobol_pairs_.size())));
-    if (zsobol_stamps_.size() <= dimension) {
-      zsobol_stamps_.resize(dimension + 1, 0), zsobol_pixel_digits_.resize(dimension + 1);
-      zsobol_blocks_.resize(dimension + 1, ~std::uint64_t{0}), zsobol_block_digits_.resize(dimension + 1);
-    }
-    const ZSobol::Pair& pair = zsobol_pairs_[dimension];
-    if (zsobol_stamps_[dimension] != pixel_stamp_) {
-      const std::uint64_t block =
-          (std::uint64_t{pixel_y_ >> zsobol_block_levels} << 32) | (pixel_x_ >> zsobol_block_levels);
-      if (zsobol_blocks_[dimension] != block) {
-        zsobol_block_digits_[dimension] =
-            zsobol_->block_digits(pixel_x_, pixel_y_, pair, zsobol_block_levels, settings_.frame);
-        zsobol_blocks_[dimension] = block;
-      }
-      zsobol_pixel_digits_[dimension] = zsobol_->pixel_digits(pixel_x_, pixel_y_, pair, zsobol_block_digits_[dimension],
-                                                              zsobol_block_levels, settings_.frame);
-      zsobol_stamps_[dimension] = pixel_stamp_;
-    }
-    return zsobol_->sample_digits(pixel_x_, pixel_y_, zsobol_pixel_digits_[dimension], index_, pair, settings_.frame);
+    if (dimension < zsobol_stamps_.size() && zsobol_stamps_[dimension] == pixel_stamp_ &&
+        settings_.spp <= zsobol_table_max) [[likely]]
+      return zsobol_pixel_digits_[dimension] | zsobol_sample_digits_[std::size_t{dimension} * settings_.spp + index_];
+    return zsobol_index_miss(dimension);
   }
+  std::uint64_t zsobol_index_miss(std::uint32_t dimension);
+  std::array<double, 2> zsobol_point(std::uint32_t dimension) {
+    const std::uint64_t sequence = zsobol_index(dimension);  // before the pair: it may add the pair
+    return zsobol_->point(sequence, zsobol_pairs_[dimension]);
+  }
+  /// Up to this spp, the permuted digits of a pixel's samples are tabled per
+  /// pixel and pair (ZSobol::sample_digit_table: 5 hashes at 16 spp instead of 32).
+  static constexpr std::uint32_t zsobol_table_max = 256;
+  std::vector<std::uint64_t> zsobol_sample_digits_;  ///< [dimension · spp + sample], valid with the pair's stamp
 
   /// sobol-bn, pmj02-bn, lattice-bn (sequences/ranked_blue_noise.hpp): the tile's pairs share one randomization
   /// per render (derived once); per pixel and dimension its keyed pair, valid
@@ -210,15 +210,14 @@ class PixelSampler {
   std::vector<RankedBlueNoise::PixelPair> ranked_bn_shared_, ranked_bn_pixel_;
   std::vector<std::uint64_t> ranked_bn_stamps_;
   const RankedBlueNoise::PixelPair& ranked_bn_pair(std::uint32_t dimension) {
-    while (ranked_bn_shared_.size() <= dimension)
-      ranked_bn_shared_.push_back(ranked_bn_->shared_pair(std::uint32_t(ranked_bn_shared_.size())));
-    if (ranked_bn_stamps_.size() <= dimension)
-      ranked_bn_stamps_.resize(dimension + 1, 0), ranked_bn_pixel_.resize(dimension + 1);
-    if (ranked_bn_stamps_[dimension] != pixel_stamp_) {
-      ranked_bn_pixel_[dimension] = ranked_bn_->pixel_pair(pixel_x_, pixel_y_, dimension, ranked_bn_shared_[dimension]);
-      ranked_bn_stamps_[dimension] = pixel_stamp_;
-    }
-    return ranked_bn_pixel_[dimension];
+    if (dimension < ranked_bn_stamps_.size() && ranked_bn_stamps_[dimension] == pixel_stamp_) [[likely]]
+      return ranked_bn_pixel_[dimension];
+    return ranked_bn_pair_miss(dimension);
+  }
+  /// ranked_bn_pair the first time a pixel draws from `dimension`'s pair (once per pixel and pair).
+  const RankedBlueNoise::PixelPair& ranked_bn_pair_miss(std::uint32_t dimension);
+  std::array<double, 2> ranked_bn_point(std::uint32_t dimension) {
+    return ranked_bn_->point(sequence_index_, ranked_bn_pair(dimension));
   }
 
   /// halton (permute) without RandomDigitPermutations' tables: what point i < n
@@ -351,6 +350,7 @@ class PixelSampler {
   Fast fast_ = Fast::none;        ///< a direct path for the common samplers
   bool halton_permute_ = false;   ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
   bool arrays_continue_ = false;  ///< a progressive sampler: get_2d_array continues the pixel's sequence (above)
+  unsigned sampler_dims_ = 2;     ///< the dimensions of the sampler's sets (2, or its smallest: latin-square's 3)
   std::string spacetime_;         ///< the space-time sampler, or empty
   bool has_spacetime_ = false;
   std::uint64_t pixel_key_ = 0;
