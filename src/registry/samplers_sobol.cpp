@@ -404,15 +404,21 @@ PointSet generate_sobol(const SamplerRequest& request) {
   throw invalid_argument("randomize", randomize, "unknown to the Sobol generator");
 }
 
-const Param order_param = params::choice(
-    "order", "point order: gray (Gray code, as Boost.Random and scipy) or natural (index bits, as pbrt-v4)", "gray",
-    {"gray", "natural"});
+// Functions, not namespace-scope objects: the registry is built on first use,
+// which may come from another file's static initializer (a benchmark's
+// registration), before this file's own globals are constructed.
+Param order_param() {
+  return params::choice("order",
+                        "point order: gray (Gray code, as Boost.Random and scipy) or natural (index bits, as pbrt-v4)",
+                        "gray", {"gray", "natural"});
+}
 
-const Param bits_param = params::integer(
-    "bits",
-    "binary digits kept of every coordinate: floor(x 2^bits) / 2^bits after the randomizer (scipy's Sobol bits; 64 "
-    "and anything above 53 keep every digit of a double)",
-    "64", closed(1, 64));
+Param bits_param() {
+  return params::integer("bits",
+                         "binary digits kept of every coordinate: floor(x 2^bits) / 2^bits after the randomizer "
+                         "(scipy's Sobol bits; 64 and anything above 53 keep every digit of a double)",
+                         "64", closed(1, 64));
+}
 
 /// zsobol's image (resolution) and pixel from the request; the points are
 /// the pixel's n = spp samples.
@@ -457,7 +463,7 @@ std::vector<SamplerInfo> sobol() {
                      "powers of two give (t,m,s)-nets", "64-bit indices and digits"},
       .randomizers = {"owen-hash", "none", "owen", "xor", "lms", "cp"},
       .counts = "any n >= 1 (powers of two give (t,m,s)-nets)",
-      .params = {order_param, bits_param},
+      .params = {order_param(), bits_param()},
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_sobol,
@@ -494,7 +500,7 @@ std::vector<SamplerInfo> sobol() {
       .properties = {"(0,2)-sequence", "(0,m,2)-net at every power of two"},
       .randomizers = {"owen-hash", "none", "owen", "xor", "lms"},
       .counts = "any n >= 1 (powers of two give (0,m,2)-nets)",
-      .params = {order_param, bits_param},
+      .params = {order_param(), bits_param()},
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_sobol,

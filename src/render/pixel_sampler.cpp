@@ -307,6 +307,19 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = ranked_bn_->array_point(sequence_index_, n, i, pair);
     return;
   }
+  if (halton_permute_ && arrays_continue_ && (offset_ + settings_.spp) * n <= halton_direct_max) {
+    // Every sample of the pixel reads the same continued set (its seed ends
+    // in tag_continued): built once per pixel and array dimension, for all
+    // the pixel's arrays, instead of once per sample.
+    if (halton_array_sets_.size() <= dimension) halton_array_sets_.resize(dimension + 1);
+    HaltonArraySet& cached = halton_array_sets_[dimension];
+    if (cached.stamp != pixel_stamp_ || cached.n != n) {
+      build_halton_set(seed, (offset_ + settings_.spp) * n, cached.set);
+      cached.stamp = pixel_stamp_, cached.n = n;
+    }
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(cached.set, start + i);
+    return;
+  }
   if (halton_permute_ && start + n <= halton_direct_max) {
     HaltonSet set;
     build_halton_set(seed, start + n, set);

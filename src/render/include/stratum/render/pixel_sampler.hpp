@@ -239,8 +239,14 @@ class PixelSampler {
   void build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set, unsigned coordinates = 2) const noexcept;
   /// Point `index` of a built set (its first `set.coordinates` coordinates; the others 0).
   static std::array<double, 2> halton_point(const HaltonSet& set, std::uint64_t index) noexcept;
-  bool halton_direct_ = false;                        ///< halton_permute_ and offset_ + spp ≤ halton_direct_max
-  std::vector<HaltonSet> halton_sets_;                ///< this pixel's get_2d sets, by dimension (cache)
+  bool halton_direct_ = false;          ///< halton_permute_ and offset_ + spp ≤ halton_direct_max
+  std::vector<HaltonSet> halton_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
+  struct HaltonArraySet {
+    HaltonSet set;
+    std::uint64_t stamp = 0;  ///< the pixel it was built for (pixel_stamp_)
+    std::uint32_t n = 0;      ///< points per array
+  };
+  std::vector<HaltonArraySet> halton_array_sets_;     ///< this pixel's continued get_2d_array sets, by dimension
   std::vector<unsigned __int128> halton_weights_[2];  ///< W_j of bases 2 and 3 (digits.hpp)
 
   // The seed hashing a pixel's draws share is done once per pixel (or per
