@@ -54,7 +54,7 @@ nlohmann::json to_json(const sa::DimensionStudy& study) {
   for (const auto& s : study.series)
     series.push_back({{"d", s.d},
                       {"exact", s.exact},
-                      {"variance", s.variance >= 0 ? number(s.variance) : nullptr},
+                      {"variance", number(s.variance)},
                       {"m", s.m},
                       {"n", s.n},
                       {"product_error", numbers(s.product_error)},

@@ -179,14 +179,13 @@ py::dict study_dimension(unsigned min_dim, unsigned max_dim, std::uint64_t min_n
   }
   py::list series;
   for (const auto& s : study.series)
-    series.append(py::dict(
-        py::arg("d") = s.d, py::arg("exact") = s.exact,
-        py::arg("variance") = s.variance >= 0 ? s.variance : std::numeric_limits<double>::quiet_NaN(),
-        py::arg("m") = column(s.m), py::arg("n") = column(s.n), py::arg("product_error") = column(s.product_error),
-        py::arg("mc_rmse") = column(s.mc_rmse), py::arg("mc_predicted") = column(s.mc_predicted),
-        py::arg("sobol_rmse") = column(s.sobol_rmse), py::arg("product_slope") = s.product_slope,
-        py::arg("product_predicted_slope") = s.product_predicted_slope, py::arg("mc_slope") = s.mc_slope,
-        py::arg("sobol_slope") = s.sobol_slope));
+    series.append(py::dict(py::arg("d") = s.d, py::arg("exact") = s.exact, py::arg("variance") = s.variance,
+                           py::arg("m") = column(s.m), py::arg("n") = column(s.n),
+                           py::arg("product_error") = column(s.product_error), py::arg("mc_rmse") = column(s.mc_rmse),
+                           py::arg("mc_predicted") = column(s.mc_predicted),
+                           py::arg("sobol_rmse") = column(s.sobol_rmse), py::arg("product_slope") = s.product_slope,
+                           py::arg("product_predicted_slope") = s.product_predicted_slope,
+                           py::arg("mc_slope") = s.mc_slope, py::arg("sobol_slope") = s.sobol_slope));
   return py::dict(py::arg("rule") = study.rule, py::arg("integrand") = study.integrand, py::arg("runs") = study.runs,
                   py::arg("series") = series);
 }

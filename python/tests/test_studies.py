@@ -148,3 +148,29 @@ def test_study_mis_closed_forms_and_refusals():
         stratum.study_mis(samples=7)
     with pytest.raises(stratum.InvalidArgument, match="invalid beta"):
         stratum.study_mis(beta="2")
+
+
+def test_dimension_study_unknown_variance_is_nan_here_and_null_in_the_cli():
+    # genz-gaussian's variance is not known in closed form: the library says
+    # NaN, Python passes it through, the CLI's JSON writes null (JSON has no
+    # NaN); the known one (sine-product) is the same number on both faces.
+    import json
+    import pathlib
+    import subprocess
+
+    import build_parts
+
+    cli = pathlib.Path(stratum.__file__).resolve().parents[2] / "bin" / "stratum"  # the CLI of the same build
+    if not cli.exists():
+        assert not build_parts.cache_option("STRATUM_BUILD_APPS"), f"{cli} is missing: build the stratum target"
+        pytest.skip("no stratum executable beside the package")
+    for integrand, known in (("genz-gaussian", False), ("sine-product", True)):
+        r = stratum.study_dimension("2:2", "16:64", runs=2, integrand=integrand)
+        out = subprocess.run([str(cli), "study", "dimension", "--dims", "2:2", "--n", "16:64", "--runs", "2",
+                              "--integrand", integrand, "--json"], check=True, capture_output=True, text=True).stdout
+        variance = json.loads(out)["series"][0]["variance"]
+        if known:
+            assert variance == r["series"][0]["variance"] == pytest.approx(np.pi**4 / 64 - 1, rel=1e-14)
+        else:
+            assert np.isnan(r["series"][0]["variance"]) and variance is None
+            assert np.all(np.isnan(r["series"][0]["mc_predicted"]))

@@ -289,7 +289,8 @@ DimensionStudy run_dimension_study(const DimensionStudyRequest& request) {
     series.mc_predicted.assign(k, nan);
     if (request.sobol) series.sobol_rmse.assign(k, 0);
     for (std::size_t i = 0; i < k; ++i) {
-      if (series.variance >= 0) series.mc_predicted[i] = std::sqrt(series.variance / static_cast<double>(series.n[i]));
+      if (std::isfinite(series.variance))
+        series.mc_predicted[i] = std::sqrt(series.variance / static_cast<double>(series.n[i]));
       for (unsigned r = 0; r < request.runs; ++r) {
         tasks.push_back({study.series.size(), i, r, false});
         if (request.sobol) tasks.push_back({study.series.size(), i, r, true});

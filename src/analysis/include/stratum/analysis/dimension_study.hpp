@@ -23,6 +23,7 @@
 ///    N^(1/d), i.e. like exp(−c N^(1/d)): still a curse of dimension.
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -62,7 +63,7 @@ struct DimensionIntegrand {
   std::string description;
   PointFunction f;
   double exact = 0;
-  double variance = -1;  ///< < 0: unknown
+  double variance = std::numeric_limits<double>::quiet_NaN();  ///< NaN: unknown (every face shows it as its "none")
 };
 
 /// Names accepted by dimension_integrand().
@@ -102,13 +103,13 @@ std::vector<unsigned> points_per_axis(const DimensionStudyRequest& request, unsi
 struct DimensionSeries {
   unsigned d = 0;
   double exact = 0;
-  double variance = -1;                ///< exact Var f, < 0 when unknown
-  std::vector<unsigned> m;             ///< points per axis
-  std::vector<std::uint64_t> n;        ///< N = m^d
-  std::vector<double> product_error;   ///< |Q − I|
-  std::vector<double> mc_rmse;         ///< over `runs` independent MC estimates
-  std::vector<double> mc_predicted;    ///< σ/√N (NaN when σ unknown)
-  std::vector<double> sobol_rmse;      ///< empty unless request.sobol
+  double variance = std::numeric_limits<double>::quiet_NaN();  ///< exact Var f, NaN when unknown (JSON null)
+  std::vector<unsigned> m;                                     ///< points per axis
+  std::vector<std::uint64_t> n;                                ///< N = m^d
+  std::vector<double> product_error;                           ///< |Q − I|
+  std::vector<double> mc_rmse;                                 ///< over `runs` independent MC estimates
+  std::vector<double> mc_predicted;                            ///< σ/√N (NaN when σ unknown)
+  std::vector<double> sobol_rmse;                              ///< empty unless request.sobol
   double product_slope = 0;            ///< least-squares log-log slope (NaN if < 2 usable points)
   double product_predicted_slope = 0;  ///< −r/d for the midpoint rule (r = 2); NaN for gauss
   double mc_slope = 0;
