@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "sampler_options.hpp"
+#include "stratum/distributed.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
@@ -28,7 +29,7 @@ struct RenderOptions {
   SamplerOptions sampler{"sobol"};
   std::int64_t spp = 16, reference_spp = 1024, frame = 0;
   std::optional<std::int64_t> width, height;  ///< given: overrides the scene's
-  bool quiet = false, reference = false;
+  bool quiet = false, reference = false, progress = false;
 };
 
 void run_render(RenderOptions& options) {
@@ -63,19 +64,26 @@ void run_render(RenderOptions& options) {
   for (const auto& warning : warnings) fmt::print(stderr, "stratum: warning: {}\n", warning);
   if (options.width) scene.camera.width = static_cast<int>(*options.width);
   if (options.height) scene.camera.height = static_cast<int>(*options.height);
-  const bool show = !options.quiet && isatty(STDERR_FILENO);
+  // One bar for the whole job: the passes end together on every rank of a
+  // distributed job (each pass closes with a collective), so rank 0's count
+  // is the job's and only rank 0 prints. On a terminal the bar redraws in
+  // place; with --progress elsewhere (a log, mpirun's forwarded stderr) it
+  // writes a line per pass.
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  const bool show = !options.quiet && distributed::is_root() && (terminal || options.progress);
   auto progress = [&](std::uint32_t done, std::uint32_t total, double seconds) {
     if (!show) return;
     const double eta = seconds / done * (total - done);
-    fmt::print(stderr, "\rrendering: pass {}/{}  {:.1f} s  ETA {:.1f} s   ", done, total, seconds, eta);
-    if (done == total) fmt::print(stderr, "\n");
+    fmt::print(stderr, "{}rendering: pass {}/{}  {:.1f} s  ETA {:.1f} s{}", terminal ? "\r" : "", done, total, seconds,
+               eta, terminal ? "   " : "\n");
+    if (terminal && done == total) fmt::print(stderr, "\n");
   };
   render::Image image;
   bool cached = false;
   if (options.reference) {
     const std::string key = render::scene_fingerprint(scene), spp_text = std::to_string(options.reference_spp);
     const auto spp = std::uint32_t(options.reference_spp);
-    image = render::reference_image(scene, key, options.settings, spp, options.cache, &cached);
+    image = render::reference_image(scene, key, options.settings, spp, options.cache, &cached, nullptr, progress);
     fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text,
                cached ? "loaded from the cache" : "rendered and cached in",
                render::reference_cache_path(scene, key, options.settings, spp, options.cache));
@@ -145,6 +153,9 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--cache", options->cache, "folder of cached references")->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "no progress bar or summary");
+  command->add_flag("--progress", options->progress,
+                    "show the progress even when stderr is not a terminal: a line per pass (under mpirun: rank 0's, "
+                    "for the whole job)");
   command->callback([options] { run_render(*options); });
 }
 

@@ -260,7 +260,8 @@ Image load_cached_reference(const std::string& path, std::uint32_t spp, std::str
 }  // namespace
 
 Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
-                      std::uint32_t spp, const std::string& cache_dir, bool* cached, std::string* warning) {
+                      std::uint32_t spp, const std::string& cache_dir, bool* cached, std::string* warning,
+                      const std::function<void(std::uint32_t, std::uint32_t, double)>& progress) {
   const std::string path = reference_cache_path(scene, scene_key, settings, spp, cache_dir);
   const bool there = std::filesystem::exists(path) || std::filesystem::exists(metadata_sibling(path));
   std::string why = "not cached";
@@ -287,7 +288,7 @@ Image reference_image(const Scene& scene, const std::string& scene_key, const Re
   io::OutputFile* picture = entry.add("cache", path);
   io::OutputFile* meta = entry.add("cache", metadata_sibling(path));
   entry.prepare();
-  Image image = render(scene, reference_settings(settings, spp), {}, &interrupt_flag());
+  Image image = render(scene, reference_settings(settings, spp), progress, &interrupt_flag());
   if (image.stopped) throw interrupted();  // nothing cached
   // Rounded to what the cache stores (32-bit floats), so a measurement
   // against a fresh reference equals one against its cached copy.

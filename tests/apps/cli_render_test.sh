@@ -75,6 +75,13 @@ expect_error "reference-spp" render --reference --reference-spp 0 -o "$tmp/x.png
 "$stratum" render --width 8 --height 8 --spp 4 -q -o "$tmp/v.png" --variance "$tmp/v.exr" && [ -s "$tmp/v.exr" ] && ok || fail "--variance"
 expect_error "variance" render --width 8 --height 8 --spp 1 -o "$tmp/x.png" --variance "$tmp/v.png"
 [ ! -e "$tmp/x.png" ] && ok || fail "a refused --variance left x.png"
+# progress: none when stderr is not a terminal, a line per pass with --progress, none with --quiet
+"$stratum" render --width 8 --height 8 --spp 4 --passes 2 -o "$tmp/pg.png" >/dev/null 2>"$tmp/pg.err" &&
+  ! grep -q "rendering: pass" "$tmp/pg.err" && ok || fail "a progress bar on a stderr that is not a terminal"
+"$stratum" render --width 8 --height 8 --spp 4 --passes 2 --progress -o "$tmp/pg.png" >/dev/null 2>"$tmp/pg.err" &&
+  [ "$(grep -c "rendering: pass" "$tmp/pg.err")" = 2 ] && ok || fail "--progress: $(cat "$tmp/pg.err")"
+"$stratum" render --width 8 --height 8 --spp 4 --passes 2 --progress --quiet -o "$tmp/pg.png" 2>"$tmp/pg.err" &&
+  ! grep -q "rendering: pass" "$tmp/pg.err" && ok || fail "--progress --quiet printed progress"
 # every registry sampler drives the renderer or is refused with the reason: latin-square (3-D) renders,
 # a space-time pattern is a --time-pattern
 "$stratum" render --width 8 --height 8 --spp 16 --sampler latin-square -q -o "$tmp/latin.png" && [ -s "$tmp/latin.png" ] &&

@@ -96,6 +96,17 @@ for k in 2 3; do
   done
 done
 # the cached reference is loaded by every rank alike
+# One progress bar for the whole job: rank 0 alone writes a line per pass (--progress: under mpirun stderr is
+# not a terminal), for a render and for a reference.
+for k in 2 3; do
+  run "$k" render --spp 4 --passes 4 --width 40 --height 24 --progress -o "$tmp/p$k.png" >/dev/null 2>"$tmp/p.err" \
+    || fail "render --progress on $k: $(tail -3 "$tmp/p.err")"
+  [ "$(grep -c 'rendering: pass' "$tmp/p.err")" = 4 ] && grep -q 'rendering: pass 4/4' "$tmp/p.err" && ok \
+    || fail "render --progress on $k ranks: $(cat "$tmp/p.err")"
+  run "$k" render --reference --reference-spp 8 --passes 2 --width 40 --height 24 --cache "$tmp/pcache$k" --progress \
+    -o "$tmp/pr$k.png" >/dev/null 2>"$tmp/p.err" || fail "render --reference --progress on $k: $(tail -3 "$tmp/p.err")"
+  [ "$(grep -c 'rendering: pass' "$tmp/p.err")" = 2 ] && ok || fail "render --reference --progress on $k ranks: $(cat "$tmp/p.err")"
+done
 run 2 render --reference --reference-spp 8 --width 40 --height 24 --cache "$tmp/cache1" -o "$tmp/again.png" >"$tmp/out" 2>&1 \
   && grep -q "cached" "$tmp/out" && cmp -s "$tmp/ref1.png" "$tmp/again.png" && ok || fail "cached reference on 2 ranks: $(cat "$tmp/out")"
 ls -A "$tmp" | grep -q '^\.' && fail "a hidden temporary file is left: $(ls -A "$tmp")" || ok

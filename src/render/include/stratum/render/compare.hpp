@@ -84,10 +84,11 @@ void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argume
 /// variance image and a metadata file (X.json: size and FNV-1a fingerprint
 /// of each), written atomically with the metadata last; an entry that does
 /// not match its metadata is rendered again, with a warning in `warning`
-/// (or on stderr when null).
+/// (or on stderr when null). `progress` is render()'s, called for each pass of a render.
 Image reference_image(const Scene& scene, const std::string& scene_key, const RenderSettings& settings,
                       std::uint32_t spp, const std::string& cache_dir, bool* cached = nullptr,
-                      std::string* warning = nullptr);
+                      std::string* warning = nullptr,
+                      const std::function<void(std::uint32_t, std::uint32_t, double)>& progress = {});
 
 /// Mean squared error over pixels and channels, and the relative MSE
 /// (each squared error over reference² + 0.01, as pbrt's imgtool).
