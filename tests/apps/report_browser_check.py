@@ -4,7 +4,8 @@ browser logged a console error, the page overflows a 420 px window
 sideways, an image is not a link to its own full-size file, a figure's
 smallest font is under 10 px as displayed at the page's full width (the
 font size each PNG records, scaled by its displayed width), or the prose
-shows a registry id (`random:none`) or a "(s)" plural outside code tags.
+(paragraphs, captions, table cells, headings, list items) shows a registry
+id (`random:none`) or a "(s)" plural outside code tags.
 Usage: /usr/bin/python3 report_browser_check.py REPORT_DIR"""
 import pathlib
 import re
@@ -49,7 +50,7 @@ try:
         " i.getBoundingClientRect().width, i.closest('a') ? i.closest('a').getAttribute('href') : null]);")
     sections = driver.execute_script("return Array.from(document.querySelectorAll('section')).map(s => s.id);")
     prose = driver.execute_script(
-        "return Array.from(document.querySelectorAll('p, figcaption, caption, td, th')).map(p => {"
+        "return Array.from(document.querySelectorAll('p, figcaption, caption, td, th, h1, h2, h3, h4, li, summary, dt, dd')).map(p => {"
         " const c = p.cloneNode(true); c.querySelectorAll('code').forEach(e => e.remove()); return c.textContent; });")
     log = driver.get_log("browser")
     driver.set_window_size(420, 900)
