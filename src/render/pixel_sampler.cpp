@@ -273,15 +273,6 @@ const RankedBlueNoise::PixelPair& PixelSampler::ranked_bn_pair_miss(std::uint32_
 }
 
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
-  if (zsobol_) {
-    const std::uint32_t dimension = dimension_++;
-    const std::uint64_t sequence = zsobol_index(dimension);  // before the pair: it may add the pair
-    return zsobol_->point(sequence, zsobol_pairs_[dimension]);
-  }
-  if (ranked_bn_) {
-    const std::uint32_t dimension = dimension_++;
-    return ranked_bn_->point(sequence_index_, ranked_bn_pair(dimension));
-  }
   if (halton_direct_) {
     const std::uint32_t dimension = dimension_++;
     if (halton_sets_.size() <= dimension) halton_sets_.resize(dimension + 1);

@@ -166,7 +166,7 @@ class PixelSampler {
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
                 std::uint64_t start = 0) const;
-  /// get_2d off the direct paths; `coordinates` 1: only the first is used.
+  /// get_2d off the direct, zsobol and ranked paths (halton, registry sets); `coordinates` 1: only the first is used.
   std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
   void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::uint64_t start,
                          std::array<double, 2>* out);
