@@ -16,6 +16,7 @@
 #include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/render/render.hpp"
+#include "stratum/render/render_job.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/interrupt.hpp"
 
@@ -23,33 +24,22 @@ namespace stratum::cli {
 
 namespace {
 
+/// The command line's job (checked by prepare_render_job alone) and its outputs.
 struct RenderOptions {
-  std::string scene, output = "render.png", exr, variance, cache = ".stratum-cache";
-  render::RenderSettings settings;
+  std::string output = "render.png", exr, variance;
+  render::RenderJob job;
   SamplerOptions sampler{"sobol"};
-  std::int64_t spp = 16, reference_spp = 1024, frame = 0;
-  std::optional<std::int64_t> width, height;  ///< given: overrides the scene's
-  bool quiet = false, reference = false, progress = false;
+  bool quiet = false, progress = false;
 };
 
 void run_render(RenderOptions& options) {
-  require(options.spp >= 1 && options.spp <= (std::int64_t{1} << 24), "spp", options.spp, "must be in [1, 2^24]");
-  options.settings.sampler.spp = static_cast<std::uint32_t>(options.spp);
-  render::set_pixel_sampler(options.settings.sampler, "sampler", options.sampler.sampler, options.sampler.params,
-                            options.sampler.randomize);
-  options.settings.sampler.seed = options.sampler.seed;
-  require(options.frame >= 0 && options.frame <= std::int64_t{0xffffffff}, "frame", options.frame,
-          "must be an integer in [0, 2^32 - 1] with (frame + 1) * spp <= 2^32");
-  options.settings.sampler.frame = static_cast<std::uint32_t>(options.frame);
-  render::validate_settings(options.settings);
-  // Each given size overrides the scene's (as stratum.render's width= and height=); 0 is not "unset".
-  for (const auto& [name, size] : {std::pair{"width", options.width}, std::pair{"height", options.height}})
-    require(!size || (*size >= 1 && *size <= 16384), name, size.value_or(0), "must be an integer in [1, 16384]");
-  require(options.variance.empty() || options.reference || options.spp >= 2, "variance", options.variance,
-          "needs --spp 2 or more: a pixel's variance is estimated from its samples (this render takes " +
-              std::to_string(options.spp) + ")");
-  require(options.reference_spp >= 1 && options.reference_spp <= (std::int64_t{1} << 24), "reference-spp",
-          options.reference_spp, "must be in [1, 2^24]");
+  render::RenderJob& job = options.job;
+  job.sampler = options.sampler.sampler;
+  job.sampler_params = options.sampler.params;
+  job.randomize = options.sampler.randomize;
+  job.seed = options.sampler.seed;
+  job.variance = options.variance;
+  render::prepare_render_job(job);
   // Every output checked and staged before the render, not after it (docs/outputs.md).
   render::check_image_path("output", options.output);
   if (!options.exr.empty()) render::check_image_path("exr", options.exr);
@@ -60,10 +50,8 @@ void run_render(RenderOptions& options) {
   io::OutputFile* variance = outputs.add("variance", options.variance);
   outputs.prepare();
   std::vector<std::string> warnings;
-  render::Scene scene = options.scene.empty() ? render::cornell_box() : render::load_scene(options.scene, &warnings);
+  const render::Scene scene = render::job_scene(job, &warnings);
   for (const auto& warning : warnings) fmt::print(stderr, "stratum: warning: {}\n", warning);
-  if (options.width) scene.camera.width = static_cast<int>(*options.width);
-  if (options.height) scene.camera.height = static_cast<int>(*options.height);
   // One bar for the whole job: the passes end together on every rank of a
   // distributed job (each pass closes with a collective), so rank 0's count
   // is the job's and only rank 0 prints. On a terminal the bar redraws in
@@ -78,24 +66,17 @@ void run_render(RenderOptions& options) {
                eta, terminal ? "   " : "\n");
     if (terminal && done == total) fmt::print(stderr, "\n");
   };
-  render::Image image;
-  bool cached = false;
-  if (options.reference) {
-    const std::string key = render::scene_fingerprint(scene), spp_text = std::to_string(options.reference_spp);
-    const auto spp = std::uint32_t(options.reference_spp);
-    image = render::reference_image(scene, key, options.settings, spp, options.cache, &cached, nullptr, progress);
-    fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", spp_text,
-               cached ? "loaded from the cache" : "rendered and cached in",
-               render::reference_cache_path(scene, key, options.settings, spp, options.cache));
-  } else {
-    // A first Ctrl-C stops the render within a tile and keeps its partial
-    // image (written below, then exit 130); a second one ends the process at
-    // once, leaving no output (io::StopOnInterrupt).
-    io::StopOnInterrupt stop_keeps_work;
-    image = render::render(scene, options.settings, progress, &interrupt_flag());
-  }
-  require(options.variance.empty() || image.variance.size() == image.rgb.size(), "variance", options.variance,
-          "needs per-pixel variances: this cached reference has none (delete it from --cache to render it again)");
+  // A first Ctrl-C stops a render within a tile and keeps its partial
+  // image (written below, then exit 130); a second one ends the process at
+  // once, leaving no output (io::StopOnInterrupt).
+  std::optional<io::StopOnInterrupt> stop_keeps_work;
+  if (!job.reference) stop_keeps_work.emplace();
+  const render::RenderJobResult result = render::run_render_job(job, scene, progress, &interrupt_flag());
+  const render::Image& image = result.image;
+  const bool cached = result.cached;
+  if (job.reference)
+    fmt::print(stderr, "stratum: reference ({} spp) {} {}\n", job.reference_spp,
+               cached ? "loaded from the cache" : "rendered and cached in", result.cache_entry);
   render::write_image(image, *png);
   if (exr) render::write_image(image, *exr);
   if (variance) render::write_variance_image(image, *variance);
@@ -104,26 +85,26 @@ void run_render(RenderOptions& options) {
     if (show) fmt::print(stderr, "\n");
     throw interrupted(fmt::format(
         "stopped by Ctrl-C: {} holds the {} of {} passes completed ({} of {} spp per pixel{})", options.output,
-        image.passes, std::clamp<std::uint32_t>(options.settings.passes, 1, options.settings.sampler.spp),
-        image.samples, options.settings.sampler.spp,
+        image.passes, std::clamp<std::uint32_t>(job.settings.passes, 1, job.settings.sampler.spp), image.samples,
+        job.settings.sampler.spp,
         image.partial_pass > 0 ? fmt::format("; {:.0f}% of the tiles also the next pass", 100 * image.partial_pass)
                                : ""));
   }
   if (!options.quiet)
     fmt::print("{}: {}x{}, {} spp, {:.2f} s{}\n", options.output, image.width, image.height, image.samples,
-               image.seconds, options.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
+               image.seconds, job.reference ? (cached ? " (reference, cached)" : " (reference)") : "");
 }
 
 }  // namespace
 
 void add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
-  auto& s = options->settings;
+  auto& s = options->job.settings;
   auto* command = app.add_subcommand("render", "Render a scene (the built-in Cornell box without SCENE)");
-  command->add_option("scene", options->scene, "JSON scene file (docs/scenes.md)");
+  command->add_option("scene", options->job.scene, "JSON scene file (docs/scenes.md)");
   command->add_option("-o,--output", options->output, "tonemapped sRGB image (.png)")->capture_default_str();
   command->add_option("--exr", options->exr, "also write the linear image (.exr)");
-  command->add_option("--spp", options->spp, "eye rays per pixel")->capture_default_str();
+  command->add_option("--spp", options->job.spp, "eye rays per pixel")->capture_default_str();
   command->add_option("--integrator", s.integrator, "direct|irradiance|path")->capture_default_str();
   command->add_option("--light-samples", s.light_samples, "shadow rays per eye ray (M)")->capture_default_str();
   command->add_option("--light-strategy", s.light_strategy, "area|solid-angle|projected-solid-angle|bsdf|mis")
@@ -137,21 +118,21 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--time-pattern", s.sampler.time_pattern, "random|cook|magic-square (spp = m^2)");
   command
-      ->add_option("--frame", options->frame,
+      ->add_option("--frame", options->job.frame,
                    "animation frame K: continues each pixel's sequence (samples K*spp..) for a progressive "
                    "sampler, a fresh seed otherwise (docs/render.md)")
       ->capture_default_str();
   add_threads_option(*command, s.threads, "threads");
   command->add_option("--passes", s.passes, "progressive passes")->capture_default_str();
   command->add_option("--time-limit", s.time_limit, "seconds; stops after the pass that reaches it (0: none)");
-  command->add_option("--width", options->width, "override the scene's image width");
-  command->add_option("--height", options->height, "override the scene's image height");
+  command->add_option("--width", options->job.width, "override the scene's image width");
+  command->add_option("--height", options->job.height, "override the scene's image height");
   command->add_option("--variance", options->variance, "also write the variance of each pixel's mean (.exr)");
-  command->add_flag("--reference", options->reference,
+  command->add_flag("--reference", options->job.reference,
                     "render the converged reference of this estimand (Owen-scrambled Sobol', cached) instead");
-  command->add_option("--reference-spp", options->reference_spp, "samples per pixel of --reference")
+  command->add_option("--reference-spp", options->job.reference_spp, "samples per pixel of --reference")
       ->capture_default_str();
-  command->add_option("--cache", options->cache, "folder of cached references")->capture_default_str();
+  command->add_option("--cache", options->job.cache, "folder of cached references")->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "no progress bar or summary");
   command->add_flag("--progress", options->progress,
                     "show the progress even when stderr is not a terminal: a line per pass (under mpirun: rank 0's, "

@@ -9,6 +9,8 @@
 
 #include "bindings.hpp"
 #include "interruptible.hpp"
+#include "keywords.hpp"
+#include "stratum/render/render_job.hpp"
 #include "stratum/util/interrupt.hpp"
 #include "stratum/io/json.hpp"
 #include "stratum/render/compare.hpp"
@@ -28,30 +30,49 @@ py::array_t<double> to_array(const std::vector<double>& values, int width, int h
   return out;
 }
 
-void check_size(const char* name, int value) {
-  require(value >= 0 && value <= 16384, name, value, "must be in [1, 16384] (or None: the scene's)");
-}
-
-py::tuple render_image(const std::string& scene_path, int width, int height, const render::RenderSettings& settings,
-                       std::uint32_t reference_spp, const std::string& cache) {
-  check_size("width", width);
-  check_size("height", height);
-  render::validate_settings(settings);
-  render::Scene scene = scene_path.empty() ? render::cornell_box() : render::load_scene(scene_path);
-  if (width > 0) scene.camera.width = width;
-  if (height > 0) scene.camera.height = height;
-  render::Image image;
-  bool cached = false;
+/// render(**kwargs): the keywords of stratum.render() (python/stratum/render.py),
+/// read into a RenderJob that the library checks, as the CLI's.
+py::tuple render_job(const py::kwargs& kwargs) {
+  render::RenderJob job;
+  render::RenderSettings& s = job.settings;
+  Keywords keywords(kwargs);
+  keywords.path("scene", job.scene);
+  keywords.integer("width", job.width);
+  keywords.integer("height", job.height);
+  keywords.integer("spp", job.spp);
+  keywords.text("integrator", s.integrator);
+  keywords.integer("light_samples", s.light_samples);
+  keywords.text("light_strategy", s.light_strategy);
+  keywords.text("hemisphere", s.hemisphere);
+  keywords.integer("max_depth", s.max_depth);
+  keywords.text("sampler", job.sampler);
+  keywords.text("randomize", job.randomize, true);
+  keywords.text("time_pattern", s.sampler.time_pattern, true);
+  keywords.seed("seed", job.seed);
+  keywords.threads("threads", s.threads);
+  keywords.integer("passes", s.passes);
+  keywords.flag("pixel_centers", s.pixel_centers);
+  keywords.flag("reference", job.reference);
+  keywords.integer("reference_spp", job.reference_spp);
+  keywords.path("cache", job.cache);
+  keywords.integer("frame", job.frame);
+  bool with_variance = false;
+  keywords.flag("with_variance", with_variance);
+  keywords.finish();
+  if (with_variance) job.variance = "True", job.variance_argument = "with_variance";
+  render::prepare_render_job(job);
+  const render::Scene scene = render::job_scene(job);
+  render::RenderJobResult result;
   {
     InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
-    image = reference_spp > 0 ? render::reference_image(scene, render::scene_fingerprint(scene), settings,
-                                                        reference_spp, cache, &cached)
-                              : render::render(scene, settings, {}, &interrupt_flag());
+    result = render::run_render_job(job, scene, {}, &interrupt_flag());
   }
+  const render::Image& image = result.image;
   if (image.stopped) throw interrupted();  // Ctrl-C: KeyboardInterrupt, no partial image
   py::object variance = py::none();
   if (image.variance.size() == image.rgb.size()) variance = to_array(image.variance, image.width, image.height);
-  return py::make_tuple(to_array(image.rgb, image.width, image.height), variance, image.samples, image.seconds, cached);
+  return py::make_tuple(to_array(image.rgb, image.width, image.height), variance, image.samples, image.seconds,
+                        result.cached);
 }
 
 py::list compare_rows(const std::string& scene_path, const std::string& builtin, const std::string& configs_json,
@@ -102,31 +123,9 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
 }  // namespace
 
 void bind_render(py::module_& m) {
-  m.def(
-      "render",
-      [](const std::string& scene, int width, int height, std::uint32_t spp, const std::string& integrator,
-         std::uint32_t light_samples, const std::string& light_strategy, const std::string& hemisphere,
-         std::uint32_t max_depth, const std::string& sampler, const std::string& randomize,
-         const std::string& time_pattern, std::uint64_t seed, unsigned threads, std::uint32_t passes,
-         bool pixel_centers, std::uint32_t reference_spp, const std::string& cache, std::uint32_t frame) {
-        render::RenderSettings s;
-        s.integrator = integrator;
-        s.light_samples = light_samples;
-        s.light_strategy = light_strategy;
-        s.hemisphere = hemisphere;
-        s.max_depth = max_depth;
-        s.sampler = render::PixelSamplerSettings{sampler, randomize, seed, spp, time_pattern};
-        render::set_pixel_sampler(s.sampler, "sampler", sampler, {}, randomize);
-        s.sampler.frame = frame;
-        s.threads = threads;
-        s.passes = passes;
-        s.pixel_centers = pixel_centers;
-        return render_image(scene, width, height, s, reference_spp, cache);
-      },
-      py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("spp"), py::arg("integrator"),
-      py::arg("light_samples"), py::arg("light_strategy"), py::arg("hemisphere"), py::arg("max_depth"),
-      py::arg("sampler"), py::arg("randomize"), py::arg("time_pattern"), py::arg("seed"), py::arg("threads"),
-      py::arg("passes"), py::arg("pixel_centers"), py::arg("reference_spp"), py::arg("cache"), py::arg("frame"));
+  m.def("render", &render_job,
+        "Renders as stratum.render() (every argument by keyword): (image, variance or None, samples, seconds, "
+        "cached)");
   m.def(
       "compare",
       [](const std::string& scene, const std::string& builtin, const std::string& configs, std::uint32_t reference_spp,

@@ -71,23 +71,14 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
     random, ...) continues each pixel's sequence (samples K*spp onwards, so
     frames 0..K-1 together are one frame at K*spp); others take a fresh seed.
     Raises stratum.InvalidArgument naming the argument at fault."""
-    if not isinstance(pixel_centers, bool):
-        raise _error("pixel_centers", pixel_centers, "must be True or False")
-    if with_variance and not reference and isinstance(spp, numbers.Integral) and spp == 1:
-        raise _error("with_variance", True, "needs spp >= 2: a pixel's variance is estimated from its samples "
-                     "(this render takes 1)")
+    # Every check is the library's (stratum/render/render_job.hpp), as for `stratum render`.
     image, variance, _, _, _ = _stratum.render(
-        _path("scene", scene), 0 if width is None else _count("width", width, 1, 16384),
-        0 if height is None else _count("height", height, 1, 16384), _count("spp", spp),
-        _text("integrator", integrator), _count("light_samples", light_samples, 1, 65536),
-        _text("light_strategy", light_strategy), _text("hemisphere", hemisphere), _count("max_depth", max_depth, 1, 1024),
-        _text("sampler", sampler), _text("randomize", randomize, True), _text("time_pattern", time_pattern, True),
-        _seed(seed), _checks.threads(threads), _count("passes", passes), pixel_centers,
-        _count("reference_spp", reference_spp) if reference else 0, _path("cache", cache),
-        _count("frame", frame, 0, 2**32 - 1))
+        scene=scene, width=width, height=height, spp=spp, integrator=integrator, light_samples=light_samples,
+        light_strategy=light_strategy, hemisphere=hemisphere, max_depth=max_depth, sampler=sampler,
+        randomize=randomize, time_pattern=time_pattern, seed=seed, threads=threads, passes=passes,
+        pixel_centers=pixel_centers, reference=reference, reference_spp=reference_spp, cache=cache, frame=frame,
+        with_variance=with_variance)
     if with_variance:
-        if variance is None:
-            raise _error("with_variance", True, f"the cached reference in {cache} has no variance image")
         return image, variance
     return image
 

@@ -80,7 +80,7 @@ def test_integrand_not_representable():
 def test_variance_needs_two_samples():
     if not hasattr(stratum, "comparisons"):
         pytest.skip("built without the renderer")
-    with pytest.raises(InvalidArgument, match="invalid with_variance = True: needs spp >= 2"):
+    with pytest.raises(InvalidArgument, match="invalid with_variance = True: needs spp 2 or more"):
         stratum.render(width=4, height=4, spp=1, passes=1, with_variance=True)
 
 

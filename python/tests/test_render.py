@@ -1,5 +1,7 @@
 """stratum.render / compare / comparisons: the renderer from Python (docs/render.md)."""
 import json
+import os
+import subprocess
 
 import numpy as np
 import pytest
@@ -163,3 +165,67 @@ def test_exact_disk_light_covers_exactly_its_closed_form_footprint(tmp_path):
     assert np.array_equal(exact[clear], np.where(r2 <= 1, 2.0, 0.0)[clear])
     polygon = stratum.render(scene({"segments": 16}), spp=1, pixel_centers=True, passes=1)[:, :, 0]
     assert np.sum(polygon[clear] != exact[clear]) > 0
+
+
+# The CLI of the same build: <build>/python/stratum/ beside <build>/bin/stratum.
+STRATUM_EXE = os.path.join(os.path.dirname(stratum.__file__), os.pardir, os.pardir, "bin", "stratum")
+
+
+@pytest.mark.parametrize("keywords, flags", [
+    ({"spp": 0}, ["--spp", "0"]),
+    ({"spp": 2**24 + 1}, ["--spp", "16777217"]),
+    ({"width": 0}, ["--width", "0"]),
+    ({"height": 16385}, ["--height", "16385"]),
+    ({"frame": 2**28, "spp": 16}, ["--frame", "268435456", "--spp", "16"]),
+    ({"passes": 0}, ["--passes", "0"]),
+    ({"light_samples": 0}, ["--light-samples", "0"]),
+    ({"max_depth": 2000}, ["--max-depth", "2000"]),
+    ({"reference_spp": 0}, ["--reference-spp", "0"]),
+    ({"sampler": "sobol:permute"}, ["--sampler", "sobol:permute"]),
+    ({"sampler": "jittered", "spp": 8}, ["--sampler", "jittered", "--spp", "8"]),
+    ({"time_pattern": "cook", "spp": 8}, ["--time-pattern", "cook", "--spp", "8"]),
+    ({"seed": -1}, ["--seed", "-1"]),
+    ({"threads": 5000}, ["--threads", "5000"]),
+])
+def test_render_refuses_what_the_cli_refuses_with_the_same_words(keywords, flags, tmp_path):
+    # One check for both faces (stratum/render/render_job.hpp): the message
+    # after the argument's name is the CLI's, word for word.
+    if not os.access(STRATUM_EXE, os.X_OK):
+        pytest.skip("no stratum executable beside the package")
+    size = {key: 4 for key in ("width", "height") if key not in keywords}
+    with pytest.raises(stratum.InvalidArgument) as python:
+        stratum.render(**dict(size, **keywords))
+    size_flags = [text for key in size for text in (f"--{key}", "4")]
+    cli = subprocess.run([STRATUM_EXE, "render", "-q", "-o", str(tmp_path / "x.png"), *size_flags, *flags],
+                         capture_output=True, text=True)
+    assert cli.returncode != 0 and not (tmp_path / "x.png").exists()
+    allowed = str(python.value).split(": ", 1)[1]
+    assert allowed in cli.stderr, (str(python.value), cli.stderr)
+
+
+@pytest.mark.parametrize("keywords, word", [
+    ({"spp": True}, "spp"),            # a bool is not a count
+    ({"spp": 4.0}, "spp"),             # nor is a float
+    ({"spp": 2**70}, "spp"),           # beyond 64 bits: refused, not wrapped
+    ({"light_samples": 2**33}, "light_samples"),  # beyond the setting's 32 bits
+    ({"threads": 2**70}, "threads"),
+    ({"seed": 2**64}, "seed"),
+    ({"seed": "1"}, "seed"),
+    ({"pixel_centers": 1}, "pixel_centers"),
+    ({"cache": 3}, "cache"),
+    ({"sampler": None}, "sampler"),
+])
+def test_render_keywords_are_typed(keywords, word):
+    with pytest.raises(stratum.InvalidArgument, match=f"invalid {word} = "):
+        stratum.render(**dict({"width": 4, "height": 4}, **keywords))
+
+
+def test_the_binding_takes_keywords_only_and_names_an_unknown_one():
+    from stratum import _stratum
+    with pytest.raises(TypeError):
+        _stratum.render("scene.json", 4, 4)  # no positional arguments
+    with pytest.raises(stratum.InvalidArgument, match="invalid keyword = colour: is not an argument"):
+        _stratum.render(width=4, height=4, spp=1, colour=1)
+    image, variance, samples, _, cached = _stratum.render(width=np.int64(4), height=np.int32(3), spp=np.uint8(2),
+                                                          passes=1)
+    assert image.shape == (3, 4, 3) and variance.shape == (3, 4, 3) and samples == 2 and cached is False

@@ -140,7 +140,7 @@ if "$stratum" render --help >/dev/null 2>&1; then
   expect_error "invalid width = 0: must be an integer in \[1, 16384\]" render -o "$tmp/x.png" --width 0
   expect_error "invalid height = 0: must be an integer in \[1, 16384\]" render -o "$tmp/x.png" --height 0
   expect_error "invalid passes = 0: must be in \[1, 2^24\]" render -o "$tmp/x.png" --passes 0
-  expect_error "invalid variance = $tmp/v.exr: needs --spp 2 or more" \
+  expect_error "invalid variance = $tmp/v.exr: needs spp 2 or more" \
     render -o "$tmp/x.png" --spp 1 --variance "$tmp/v.exr" --width 8 --height 8
   [ -e "$tmp/x.png" ] || [ -e "$tmp/v.exr" ] && fail "a refused render left a file" || ok
   # --- compare says what it drops from the built-in box ----------------------

@@ -1,0 +1,61 @@
+#include "stratum/render/render_job.hpp"
+
+#include "stratum/render/compare.hpp"
+#include "stratum/util/error.hpp"
+
+namespace stratum::render {
+
+namespace {
+constexpr std::int64_t max_spp = std::int64_t{1} << 24;
+constexpr std::int64_t max_side = 16384;
+}  // namespace
+
+void prepare_render_job(RenderJob& job) {
+  require(job.spp >= 1 && job.spp <= max_spp, "spp", job.spp, "must be in [1, 2^24]");
+  RenderSettings& s = job.settings;
+  s.sampler.spp = static_cast<std::uint32_t>(job.spp);
+  set_pixel_sampler(s.sampler, "sampler", job.sampler, job.sampler_params, job.randomize);
+  s.sampler.seed = job.seed;
+  require(job.frame >= 0 && job.frame <= std::int64_t{0xffffffff}, "frame", job.frame,
+          "must be an integer in [0, 2^32 - 1] with (frame + 1) * spp <= 2^32");
+  s.sampler.frame = static_cast<std::uint32_t>(job.frame);
+  validate_settings(s);
+  // Each given size replaces the scene's; 0 is not "unset".
+  require(!job.width || (*job.width >= 1 && *job.width <= max_side), "width", job.width.value_or(0),
+          "must be an integer in [1, 16384]");
+  require(!job.height || (*job.height >= 1 && *job.height <= max_side), "height", job.height.value_or(0),
+          "must be an integer in [1, 16384]");
+  require(job.variance.empty() || job.reference || job.spp >= 2, job.variance_argument, job.variance,
+          "needs spp 2 or more: a pixel's variance is estimated from its samples (this render takes " +
+              std::to_string(job.spp) + ")");
+  require(job.reference_spp >= 1 && job.reference_spp <= max_spp, "reference-spp", job.reference_spp,
+          "must be in [1, 2^24]");
+}
+
+Scene job_scene(const RenderJob& job, std::vector<std::string>* warnings) {
+  Scene scene = job.scene.empty() ? cornell_box() : load_scene(job.scene, warnings);
+  if (job.width) scene.camera.width = static_cast<int>(*job.width);
+  if (job.height) scene.camera.height = static_cast<int>(*job.height);
+  return scene;
+}
+
+RenderJobResult run_render_job(const RenderJob& job, const Scene& scene,
+                               const std::function<void(std::uint32_t, std::uint32_t, double)>& progress,
+                               const std::atomic<bool>* stop) {
+  RenderJobResult result;
+  if (job.reference) {
+    const std::string key = scene_fingerprint(scene);
+    const auto spp = static_cast<std::uint32_t>(job.reference_spp);
+    result.image = reference_image(scene, key, job.settings, spp, job.cache, &result.cached, nullptr, progress);
+    result.cache_entry = reference_cache_path(scene, key, job.settings, spp, job.cache);
+  } else {
+    result.image = render(scene, job.settings, progress, stop);
+  }
+  require(job.variance.empty() || result.image.variance.size() == result.image.rgb.size(), job.variance_argument,
+          job.variance,
+          "needs per-pixel variances: the cached reference " + result.cache_entry +
+              " has none (delete it to render it again)");
+  return result;
+}
+
+}  // namespace stratum::render

@@ -1,0 +1,65 @@
+// RenderJob: the one check of what a face asks of the renderer
+// (stratum/render/render_job.hpp), and that a job renders what render() does.
+#include <gtest/gtest.h>
+
+#include "stratum/render/render_job.hpp"
+#include "stratum/util/error.hpp"
+
+namespace stratum::render {
+namespace {
+
+std::string refusal(RenderJob job) {
+  try {
+    prepare_render_job(job);
+  } catch (const invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RenderJob, RefusesEachBadFieldNamingItsValue) {
+  RenderJob job;
+  job.width = job.height = 4;
+  const auto with = [&](auto change) {
+    RenderJob changed = job;
+    change(changed);
+    return refusal(changed);
+  };
+  EXPECT_EQ(refusal(job), "");
+  EXPECT_EQ(with([](RenderJob& j) { j.spp = 0; }), "invalid spp = 0: must be in [1, 2^24]");
+  EXPECT_EQ(with([](RenderJob& j) { j.width = 16385; }), "invalid width = 16385: must be an integer in [1, 16384]");
+  EXPECT_EQ(with([](RenderJob& j) { j.height = 0; }), "invalid height = 0: must be an integer in [1, 16384]");
+  EXPECT_EQ(with([](RenderJob& j) { j.frame = -1; }).rfind("invalid frame = -1: ", 0), 0u);
+  EXPECT_EQ(with([](RenderJob& j) { j.reference_spp = 0; }), "invalid reference-spp = 0: must be in [1, 2^24]");
+  EXPECT_EQ(with([](RenderJob& j) { j.sampler = "no-such"; }).rfind("invalid sampler", 0), 0u);
+  EXPECT_EQ(with([](RenderJob& j) { j.sampler = "sobol", j.randomize = "permute"; }).rfind("invalid randomize", 0), 0u);
+  EXPECT_EQ(
+      with([](RenderJob& j) { j.spp = 1, j.variance = "v.exr"; }).rfind("invalid variance = v.exr: needs spp 2", 0),
+      0u);
+  EXPECT_EQ(with([](RenderJob& j) { j.spp = 1, j.variance = "v.exr", j.reference = true; }),
+            "");  // a reference has its own
+  EXPECT_EQ(with([](RenderJob& j) { j.settings.integrator = "bdpt"; }).rfind("invalid integrator = bdpt", 0), 0u);
+}
+
+TEST(RenderJob, FillsThePixelSamplerFromTheSpecAndRendersAsRender) {
+  RenderJob job;
+  job.width = 8, job.height = 6, job.spp = 4, job.seed = 7, job.frame = 2;
+  job.sampler = "halton:owen";
+  job.settings.passes = 1;
+  prepare_render_job(job);
+  EXPECT_EQ(job.settings.sampler.sampler, "halton");
+  EXPECT_EQ(job.settings.sampler.randomize, "owen");
+  EXPECT_EQ(job.settings.sampler.spp, 4u);
+  EXPECT_EQ(job.settings.sampler.seed, 7u);
+  EXPECT_EQ(job.settings.sampler.frame, 2u);
+  const Scene scene = job_scene(job);
+  EXPECT_EQ(scene.camera.width, 8);
+  EXPECT_EQ(scene.camera.height, 6);
+  const RenderJobResult result = run_render_job(job, scene);
+  const Image direct = render(scene, job.settings);
+  EXPECT_EQ(result.image.rgb, direct.rgb);
+  EXPECT_FALSE(result.cached);
+}
+
+}  // namespace
+}  // namespace stratum::render
