@@ -42,6 +42,21 @@ std::int64_t Keywords::integer_in(const char* name, const py::object& value, std
   return n;
 }
 
+void Keywords::real(const char* name, double& out) {
+  std::optional<double> given;
+  real(name, given);
+  if (given) out = *given;
+}
+
+void Keywords::real(const char* name, std::optional<double>& out) {
+  const auto value = take(name);
+  if (!value || value->is_none()) return;
+  const py::object numbers = py::module_::import("numbers");
+  if (is_bool(*value) || !py::isinstance(*value, numbers.attr("Real")))
+    throw invalid_argument(name, shown(*value), "must be a real number");
+  out = value->cast<double>();
+}
+
 void Keywords::text(const char* name, std::string& out, bool optional) {
   const auto value = take(name);
   if (!value) return;
@@ -52,6 +67,13 @@ void Keywords::text(const char* name, std::string& out, bool optional) {
       throw invalid_argument(name, shown(*value), optional ? "must be a string or None" : "must be a string");
     out = value->cast<std::string>();
   }
+}
+
+void Keywords::text(const char* name, std::optional<std::string>& out) {
+  const auto value = take(name);
+  if (!value || value->is_none()) return;
+  if (!py::isinstance<py::str>(*value)) throw invalid_argument(name, shown(*value), "must be a string or None");
+  out = value->cast<std::string>();
 }
 
 void Keywords::path(const char* name, std::string& out) {

@@ -32,8 +32,14 @@ class Keywords {
     const auto value = take(name);
     if (value && !value->is_none()) out = static_cast<Int>(integer_in(name, *value, low<Int>(), high<Int>()));
   }
+  /// A real number (int or float, numpy's too; never a bool or a string);
+  /// absent or None: `out` is kept (an optional stays "not given").
+  void real(const char* name, double& out);
+  void real(const char* name, std::optional<double>& out);
   /// A string; where `optional`, None reads as "".
   void text(const char* name, std::string& out, bool optional = false);
+  /// A string, where None (or absence) means "not given".
+  void text(const char* name, std::optional<std::string>& out);
   /// A path (str or os.PathLike); None reads as "".
   void path(const char* name, std::string& out);
   /// True or False.

@@ -75,22 +75,32 @@ py::tuple render_job(const py::kwargs& kwargs) {
                         result.cached);
 }
 
-py::list compare_rows(const std::string& scene_path, const std::string& builtin, const std::string& configs_json,
-                      render::CompareOptions options, int width, int height, unsigned threads, std::uint64_t seed,
-                      unsigned repeats, double confidence) {
-  std::vector<render::CompareConfig> configs;
-  if (configs_json.empty()) {
-    configs = render::builtin_comparison(builtin, threads, seed);
-  } else {
-    configs = render::parse_configs(io::parse_json(configs_json, "configs", "(the configs given)"), threads, seed);
-  }
-  const bool keep_motion = configs_json.empty() && builtin == "time-pattern";
-  const auto prepared = render::comparison_scene(scene_path, keep_motion, width, height);
-  render::RepeatedCompare repeated;
+/// compare(**kwargs): the keywords of stratum.compare(), read into a
+/// CompareJob that the library checks, as the CLI's.
+py::list compare_rows(const py::kwargs& kwargs) {
+  render::CompareJob job;
+  Keywords keywords(kwargs);
+  keywords.path("scene", job.scene);
+  keywords.text("builtin", job.builtin, true);
+  keywords.text("configs", job.configs);
+  keywords.integer("reference_spp", job.reference_spp);
+  keywords.path("cache", job.options.cache_dir);
+  keywords.real("equal_time", job.options.equal_time);
+  keywords.path("variance_dir", job.options.variance_dir);
+  keywords.integer("width", job.width);
+  keywords.integer("height", job.height);
+  keywords.threads("threads", job.threads);
+  keywords.seed("seed", job.seed);
+  keywords.integer("repeats", job.repeats);
+  keywords.real("confidence", job.confidence);
+  keywords.finish();
+  render::CompareJobResult result;
   {
     InterruptibleRelease release;  // Ctrl-C: KeyboardInterrupt
-    repeated = render::compare_repeated(prepared.scene, prepared.key, configs, options, repeats, confidence);
+    result = render::run_compare_job(job);
   }
+  const render::RepeatedCompare& repeated = result.repeated;
+  const unsigned repeats = repeated.repeats;
   const auto interval = [](const analysis::RatioInterval& i) { return py::make_tuple(i.low, i.high); };
   py::list out;
   for (std::size_t c = 0; c < repeated.summary.size(); ++c) {
@@ -100,7 +110,7 @@ py::list compare_rows(const std::string& scene_path, const std::string& builtin,
                  py::arg("efficiency") = r.efficiency, py::arg("mse_ratio") = r.mse_ratio,
                  py::arg("efficiency_ratio") = r.efficiency_ratio);
     if (!r.variance_path.empty()) row["variance"] = r.variance_path;
-    row["scene_note"] = prepared.note;                   // what the comparison's scene leaves out ("" when nothing)
+    row["scene_note"] = result.scene_note;               // what the comparison's scene leaves out ("" when nothing)
     row["low_frequency_power"] = r.low_frequency_power;  // NaN where the error has no spectrum
     row["error_spectrum"] =
         py::dict(py::arg("frequency") = r.error_radial_frequency, py::arg("power") = r.error_radial_power);
@@ -126,21 +136,7 @@ void bind_render(py::module_& m) {
   m.def("render", &render_job,
         "Renders as stratum.render() (every argument by keyword): (image, variance or None, samples, seconds, "
         "cached)");
-  m.def(
-      "compare",
-      [](const std::string& scene, const std::string& builtin, const std::string& configs, std::uint32_t reference_spp,
-         const std::string& cache, double equal_time, const std::string& variance_dir, int width, int height,
-         unsigned threads, std::uint64_t seed, unsigned repeats, double confidence) {
-        render::CompareOptions options;
-        options.reference_spp = reference_spp;
-        options.cache_dir = cache;
-        options.equal_time = equal_time;
-        options.variance_dir = variance_dir;
-        return compare_rows(scene, builtin, configs, options, width, height, threads, seed, repeats, confidence);
-      },
-      py::arg("scene"), py::arg("builtin"), py::arg("configs"), py::arg("reference_spp"), py::arg("cache"),
-      py::arg("equal_time"), py::arg("variance_dir"), py::arg("width"), py::arg("height"), py::arg("threads"),
-      py::arg("seed"), py::arg("repeats"), py::arg("confidence"));
+  m.def("compare", &compare_rows, "Compares as stratum.compare() (every argument by keyword): a dict per row");
   m.def("comparisons", [] {
     py::list list;
     for (const auto& [name, description] : render::builtin_comparisons())

@@ -135,7 +135,9 @@ def test_compare_repeated_over_paired_seeds(tmp_path):
     (lambda: stratum.compare(builtin="nope"), "comparison"),
     (lambda: stratum.compare(configs=[{"colour": 1}], width=4, height=4), "colour"),
     (lambda: stratum.compare(configs=[{"spp": 1}], builtin="path"), "configs"),
-    (lambda: stratum.compare(equal_time=-1), "equal_time"),
+    (lambda: stratum.compare(equal_time=-1), "equal-time"),
+    (lambda: stratum.compare(equal_time="1"), "equal_time"),
+    (lambda: stratum.compare(builtin="path", configs=[{"spp": 1}]), "not both"),
     (lambda: stratum.compare(repeats=0), "repeats"),
     (lambda: stratum.compare(confidence=0.9), "confidence"),
     (lambda: stratum.compare(repeats=2, confidence=1.5), "confidence"),
@@ -229,3 +231,24 @@ def test_the_binding_takes_keywords_only_and_names_an_unknown_one():
     image, variance, samples, _, cached = _stratum.render(width=np.int64(4), height=np.int32(3), spp=np.uint8(2),
                                                           passes=1)
     assert image.shape == (3, 4, 3) and variance.shape == (3, 4, 3) and samples == 2 and cached is False
+
+
+@pytest.mark.parametrize("keywords, flags", [
+    ({"width": 0}, ["--width", "0"]),
+    ({"height": 20000}, ["--height", "20000"]),
+    ({"reference_spp": 0}, ["--reference-spp", "0"]),
+    ({"repeats": 1001}, ["--repeats", "1001"]),
+    ({"confidence": 0.9}, ["--confidence", "0.9"]),
+    ({"repeats": 2, "confidence": 1.5}, ["--repeats", "2", "--confidence", "1.5"]),
+    ({"equal_time": -1}, ["--equal-time", "-1"]),
+    ({"builtin": "nope"}, ["--builtin", "nope"]),
+])
+def test_compare_refuses_what_the_cli_refuses_with_the_same_words(keywords, flags):
+    if not os.access(STRATUM_EXE, os.X_OK):
+        pytest.skip("no stratum executable beside the package")
+    with pytest.raises(stratum.InvalidArgument) as python:
+        stratum.compare(**keywords)
+    cli = subprocess.run([STRATUM_EXE, "compare", *flags], capture_output=True, text=True)
+    assert cli.returncode != 0
+    allowed = str(python.value).split(": ", 1)[1]
+    assert allowed in cli.stderr, (str(python.value), cli.stderr)

@@ -1,5 +1,8 @@
 #include "stratum/render/render_job.hpp"
 
+#include <charconv>
+
+#include "stratum/io/json.hpp"
 #include "stratum/render/compare.hpp"
 #include "stratum/util/error.hpp"
 
@@ -8,6 +11,13 @@ namespace stratum::render {
 namespace {
 constexpr std::int64_t max_spp = std::int64_t{1} << 24;
 constexpr std::int64_t max_side = 16384;
+
+/// A real as its shortest round-trip decimal (0.9, not 0.90000000000000002).
+std::string shortest(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return {text, end};
+}
 }  // namespace
 
 void prepare_render_job(RenderJob& job) {
@@ -55,6 +65,38 @@ RenderJobResult run_render_job(const RenderJob& job, const Scene& scene,
           job.variance,
           "needs per-pixel variances: the cached reference " + result.cache_entry +
               " has none (delete it to render it again)");
+  return result;
+}
+
+CompareJobResult run_compare_job(const CompareJob& job) {
+  require(job.builtin.empty() || !job.configs, "configs", job.configs_origin,
+          "give a built-in comparison or configurations, not both (builtin " + job.builtin + ")");
+  require(job.reference_spp >= 1 && job.reference_spp <= max_spp, "reference-spp", job.reference_spp,
+          "must be in [1, 2^24]");
+  require(job.width >= 1 && job.width <= max_side, "width", job.width, "must be in [1, 16384]");
+  require(job.height >= 1 && job.height <= max_side, "height", job.height, "must be in [1, 16384]");
+  require(job.repeats >= 1 && job.repeats <= 1000, "repeats", job.repeats, "must be in [1, 1000]");
+  if (job.confidence)
+    require(job.repeats >= 2, "confidence", shortest(*job.confidence),
+            "applies with repeats 2 or more (intervals over the repeats' seeds)");
+  CompareJobResult result;
+  result.confidence = job.confidence.value_or(0.95);
+  require(result.confidence > 0 && result.confidence < 1, "confidence", shortest(result.confidence),
+          "must be in (0, 1)");
+  const std::string builtin = job.builtin.empty() ? "shadow-rays" : job.builtin;
+  const auto configs =
+      job.configs ? parse_configs(io::parse_json(*job.configs, "configs", job.configs_origin), job.threads, job.seed)
+                  : builtin_comparison(builtin, job.threads, job.seed);
+  // Motion only for the time-pattern comparison: each isolates its own integral.
+  const bool keep_motion = !job.configs && builtin == "time-pattern";
+  const ComparisonScene prepared =
+      comparison_scene(job.scene, keep_motion, static_cast<int>(job.width), static_cast<int>(job.height));
+  CompareOptions options = job.options;
+  options.reference_spp = static_cast<std::uint32_t>(job.reference_spp);
+  result.repeated = compare_repeated(prepared.scene, prepared.key, configs, options, static_cast<unsigned>(job.repeats),
+                                     result.confidence);
+  result.scene_name = prepared.scene.name;
+  result.scene_note = prepared.note;
   return result;
 }
 

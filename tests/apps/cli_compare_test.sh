@@ -38,7 +38,7 @@ assert isinstance(rows[1]['time_resolved'], bool)" && ok || fail "compare --repe
 "$stratum" compare --width 8 --height 8 --reference-spp 32 --cache "$tmp/cache" --repeats 3 --confidence 0.9 |
   grep -q "MSE x (90% CI)" && ok || fail "compare --repeats table"
 expect_error "invalid repeats = 0" compare --repeats 0 --width 4 --height 4 --cache "$tmp/cache"
-expect_error "invalid confidence = 0.9: applies with --repeats 2" compare --confidence 0.9 --width 4 --height 4
+expect_error "invalid confidence = 0.9: applies with repeats 2" compare --confidence 0.9 --width 4 --height 4
 expect_error "invalid confidence = 1" compare --repeats 2 --confidence 1 --width 4 --height 4
 
 # Equal time: every configuration renders for at least the budget; samples

@@ -136,6 +136,8 @@ if "$stratum" render --help >/dev/null 2>&1; then
   expect_error "invalid configs = $tmp/empty.json: is empty" compare --configs "$tmp/empty.json"
   printf ' \n' >"$tmp/blank.json"
   expect_error "holds only white space" compare --configs "$tmp/blank.json"
+  expect_error "invalid configs = $tmp/blank.json: give a built-in comparison or configurations, not both" \
+    compare --builtin path --configs "$tmp/blank.json"
   # --- render options: no silent 0, no variance from one sample ---------------
   expect_error "invalid width = 0: must be an integer in \[1, 16384\]" render -o "$tmp/x.png" --width 0
   expect_error "invalid height = 0: must be an integer in \[1, 16384\]" render -o "$tmp/x.png" --height 0

@@ -63,3 +63,56 @@ TEST(RenderJob, FillsThePixelSamplerFromTheSpecAndRendersAsRender) {
 
 }  // namespace
 }  // namespace stratum::render
+
+namespace stratum::render {
+namespace {
+
+std::string compare_refusal(const CompareJob& job) {
+  try {
+    run_compare_job(job);
+  } catch (const invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CompareJob, RefusesEachBadFieldBeforeRendering) {
+  CompareJob job;
+  job.width = job.height = 4, job.reference_spp = 4;
+  const auto with = [&](auto change) {
+    CompareJob changed = job;
+    change(changed);
+    return compare_refusal(changed);
+  };
+  EXPECT_EQ(with([](CompareJob& j) { j.width = 0; }), "invalid width = 0: must be in [1, 16384]");
+  EXPECT_EQ(with([](CompareJob& j) { j.reference_spp = 0; }), "invalid reference-spp = 0: must be in [1, 2^24]");
+  EXPECT_EQ(with([](CompareJob& j) { j.repeats = 1001; }), "invalid repeats = 1001: must be in [1, 1000]");
+  EXPECT_EQ(
+      with([](CompareJob& j) { j.confidence = 0.9; }).rfind("invalid confidence = 0.9: applies with repeats 2", 0), 0u);
+  EXPECT_EQ(with([](CompareJob& j) { j.repeats = 2, j.confidence = 1.5; }),
+            "invalid confidence = 1.5: must be in (0, 1)");
+  EXPECT_EQ(
+      with([](CompareJob& j) {
+        j.builtin = "path", j.configs = "[]";
+      }).rfind("invalid configs = (the configs given): give a built-in comparison or configurations, not both", 0),
+      0u);
+  // Configurations given as empty text are read (and refused), not taken for "none given".
+  EXPECT_EQ(with([](CompareJob& j) { j.configs = ""; }).rfind("invalid configs = (the configs given): is empty", 0),
+            0u);
+  EXPECT_EQ(with([](CompareJob& j) { j.builtin = "nope"; }).rfind("invalid comparison = nope", 0), 0u);
+}
+
+TEST(CompareJob, RunsTheConfigurationsItIsGiven) {
+  CompareJob job;
+  job.width = job.height = 4, job.reference_spp = 8, job.seed = 3;
+  job.options.cache_dir = testing::TempDir() + "/compare-job-cache";
+  job.configs = R"([{"label": "a", "spp": 2, "sampler": "random"}, {"label": "b", "spp": 2, "sampler": "sobol"}])";
+  const CompareJobResult result = run_compare_job(job);
+  ASSERT_EQ(result.repeated.summary.size(), 2u);
+  EXPECT_EQ(result.repeated.summary[0].label, "a");
+  EXPECT_EQ(result.repeated.summary[1].label, "b");
+  EXPECT_EQ(result.confidence, 0.95);
+}
+
+}  // namespace
+}  // namespace stratum::render

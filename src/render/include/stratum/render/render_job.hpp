@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "stratum/render/compare.hpp"
+#include "stratum/render/compare_repeated.hpp"
 #include "stratum/render/render.hpp"
 #include "stratum/render/scene.hpp"
 
@@ -57,5 +59,34 @@ struct RenderJobResult {
 RenderJobResult run_render_job(const RenderJob& job, const Scene& scene,
                                const std::function<void(std::uint32_t, std::uint32_t, double)>& progress = {},
                                const std::atomic<bool>* stop = nullptr);
+
+/// A comparison as `stratum compare` and stratum.compare() ask for it,
+/// checked by run_compare_job alone.
+struct CompareJob {
+  std::string scene;    ///< a JSON scene file; empty: the built-in Cornell box (docs/render.md)
+  std::string builtin;  ///< a built-in comparison; empty: "shadow-rays" unless `configs` is given
+  std::optional<std::string>
+      configs;  ///< configurations as JSON text (docs/render.md); absent: the built-in comparison
+  std::string configs_origin = "(the configs given)";  ///< where `configs` came from, for messages (a file)
+  std::int64_t reference_spp = 1024;                   ///< [1, 2^24]
+  std::int64_t width = 64, height = 64;                ///< [1, 16384]
+  std::int64_t repeats = 1;                            ///< seeds per configuration, [1, 1000]
+  std::optional<double> confidence;                    ///< in (0, 1), with repeats ≥ 2; default 0.95
+  unsigned threads = 1;
+  std::uint64_t seed = 0;
+  CompareOptions options;  ///< cache, equal time, variance images (reference_spp is set from the job)
+};
+
+/// What run_compare_job measured, and of which scene.
+struct CompareJobResult {
+  RepeatedCompare repeated;
+  std::string scene_name;
+  std::string scene_note;  ///< what the comparison's scene leaves out ("" when nothing)
+  double confidence = 0.95;
+};
+
+/// Checks the job (invalid_argument naming the argument as the CLI spells
+/// it), builds its configurations and scene, and runs the comparison.
+CompareJobResult run_compare_job(const CompareJob& job);
 
 }  // namespace stratum::render
