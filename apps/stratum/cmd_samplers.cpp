@@ -29,6 +29,7 @@ static nlohmann::json sampler_json(const SamplerInfo& s) {
           {"flags", flags_json(s.flags)},
           {"properties", property_words(s)},
           {"randomizers", s.randomizers},
+          {"randomizer_family", randomizer_family_name(s.randomization.family)},
           {"counts", s.counts},
           {"params", params}};
 }

@@ -30,10 +30,12 @@ py::list sampler_list() {
                          py::arg("frames_continue") = f.frames_continue, py::arg("self_randomized") = f.self_randomized,
                          py::arg("zero_two_net") = f.zero_two_net, py::arg("space_time") = f.space_time,
                          py::arg("prefix_unbiased") = f.prefix_unbiased);
-    list.append(py::dict(py::arg("name") = s.name, py::arg("kind") = s.kind, py::arg("description") = s.description,
-                         py::arg("min_dim") = s.min_dim, py::arg("max_dim") = s.max_dim, py::arg("flags") = flags,
-                         py::arg("properties") = stratum::property_words(s), py::arg("randomizers") = s.randomizers,
-                         py::arg("counts") = s.counts, py::arg("params") = params));
+    list.append(
+        py::dict(py::arg("name") = s.name, py::arg("kind") = s.kind, py::arg("description") = s.description,
+                 py::arg("min_dim") = s.min_dim, py::arg("max_dim") = s.max_dim, py::arg("flags") = flags,
+                 py::arg("properties") = stratum::property_words(s), py::arg("randomizers") = s.randomizers,
+                 py::arg("randomizer_family") = std::string(stratum::randomizer_family_name(s.randomization.family)),
+                 py::arg("counts") = s.counts, py::arg("params") = params));
   }
   return list;
 }

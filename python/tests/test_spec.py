@@ -119,3 +119,25 @@ def test_render_takes_specs_without_parameters():
         stratum.render(width=8, height=8, spp=4, sampler="jittered(strata=2x2)")
     with pytest.raises(stratum.InvalidArgument, match="invalid sampler = sobl: unknown sampler 'sobl'"):
         stratum.render(width=8, height=8, spp=4, sampler="sobl")
+
+
+def test_randomizer_families_in_the_docs_are_the_registrys():
+    # docs/samplers.md's family table names every sampler of each family and
+    # the randomizers the family accepts: a change of family fails here.
+    root = os.path.join(os.path.dirname(__file__), os.pardir, os.pardir)
+    with open(os.path.join(root, "docs", "samplers.md"), encoding="utf-8") as f:
+        rows = [line.split("|")[1:-1] for line in f if line.startswith("| `base") or line.startswith("| `rotation`")
+                or line.startswith("| `seeded")]
+    assert len(rows) == 5
+    samplers = stratum.samplers()
+    for family, names, accepts, _ in rows:
+        family = family.strip().strip("`")
+        members = [s for s in samplers if s["randomizer_family"] == family]
+        expected = {s["name"] for s in members}
+        listed = {n.strip() for n in names.split(",")}
+        if "spacetime-*" in listed:
+            listed = (listed - {"spacetime-*"}) | {s["name"] for s in samplers if s["name"].startswith("spacetime-")}
+        assert listed == expected, family
+        accepted = [a.strip() for a in accepts.split(",")]
+        for s in members:
+            assert sorted(s["randomizers"]) == sorted(accepted), s["name"]

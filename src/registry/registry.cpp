@@ -13,16 +13,89 @@
 
 namespace stratum {
 
+namespace {
+struct RandomizerEntry {
+  Randomizer randomizer;
+  std::string_view name, description;
+};
+// Every randomizer: its value, its name and what it does.
+constexpr RandomizerEntry randomizer_table[] = {
+    {Randomizer::none, "none",
+     "no randomization: the deterministic construction (or the pattern's own seeded randomness)"},
+    {Randomizer::owen, "owen", "nested uniform scrambling (Owen 1995), exact, in the sequence's base"},
+    {Randomizer::owen_hash, "owen-hash", "hash-based Owen scrambling (Burley 2020), base 2"},
+    {Randomizer::xor_shift, "xor", "digital shift: XOR (base 2) or digit-wise addition mod b"},
+    {Randomizer::lms, "lms",
+     "random linear matrix scrambling plus digital shift (Matousek 1998; scipy's scramble=True for Sobol)"},
+    {Randomizer::permute, "permute",
+     "random digit permutations, one per digit position (Owen 2017, randomized Halton)"},
+    {Randomizer::cp, "cp", "Cranley-Patterson rotation: add a random vector modulo 1 (Cranley, Patterson 1976)"},
+};
+}  // namespace
+
+std::string_view randomizer_name(Randomizer randomizer) {
+  for (const auto& entry : randomizer_table)
+    if (entry.randomizer == randomizer) return entry.name;
+  return "?";
+}
+
+Randomizer parse_randomizer(std::string_view name) {
+  std::string names;
+  for (const auto& entry : randomizer_table) {
+    if (entry.name == name) return entry.randomizer;
+    names += (names.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  throw invalid_argument("randomize", name.empty() ? "''" : std::string(name), "the randomizers are " + names);
+}
+
+std::string_view randomizer_family_name(RandomizerFamily family) {
+  switch (family) {
+    case RandomizerFamily::base2_digits:
+      return "base2-digits";
+    case RandomizerFamily::base_b_digits:
+      return "base-b-digits";
+    case RandomizerFamily::rotation:
+      return "rotation";
+    case RandomizerFamily::seeded:
+      return "seeded";
+    case RandomizerFamily::seeded_owen_hash:
+      return "seeded-owen-hash";
+  }
+  return "?";
+}
+
+std::vector<Randomizer> accepted_randomizers(const Randomization& randomization) {
+  using enum Randomizer;
+  std::vector<Randomizer> family;
+  switch (randomization.family) {
+    case RandomizerFamily::base2_digits:
+      family = {owen_hash, none, owen, xor_shift, lms, cp};
+      break;
+    case RandomizerFamily::base_b_digits:
+      family = {permute, none, owen, xor_shift, cp};
+      break;
+    case RandomizerFamily::rotation:
+      family = {none, cp};
+      break;
+    case RandomizerFamily::seeded:
+      family = {none};
+      break;
+    case RandomizerFamily::seeded_owen_hash:
+      family = {owen_hash};
+      break;
+  }
+  const auto place = std::find(family.begin(), family.end(), randomization.default_randomizer);
+  if (place == family.end()) return {};  // a default outside the family: samplers() refuses the entry
+  std::rotate(family.begin(), place, place + 1);
+  return family;
+}
+
 const std::vector<std::pair<std::string, std::string>>& randomizers() {
-  static const std::vector<std::pair<std::string, std::string>> list = {
-      {"none", "no randomization: the deterministic construction (or the pattern's own seeded randomness)"},
-      {"owen", "nested uniform scrambling (Owen 1995), exact, in the sequence's base"},
-      {"owen-hash", "hash-based Owen scrambling (Burley 2020), base 2"},
-      {"xor", "digital shift: XOR (base 2) or digit-wise addition mod b"},
-      {"lms", "random linear matrix scrambling plus digital shift (Matousek 1998; scipy's scramble=True for Sobol)"},
-      {"permute", "random digit permutations, one per digit position (Owen 2017, randomized Halton)"},
-      {"cp", "Cranley-Patterson rotation: add a random vector modulo 1 (Cranley, Patterson 1976)"},
-  };
+  static const std::vector<std::pair<std::string, std::string>> list = [] {
+    std::vector<std::pair<std::string, std::string>> names;
+    for (const auto& entry : randomizer_table) names.emplace_back(entry.name, entry.description);
+    return names;
+  }();
   return list;
 }
 
@@ -34,6 +107,13 @@ const std::vector<SamplerInfo>& samplers() {
          {f::sequences, f::sobol, f::pmj, f::lattices, f::patterns, f::poisson, f::blue_noise, f::spacetime}) {
       auto part = family();
       list.insert(list.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+    }
+    for (SamplerInfo& sampler : list) {
+      const std::vector<Randomizer> accepted = accepted_randomizers(sampler.randomization);
+      if (accepted.empty())  // a programming error in an entry: fails every test at once
+        throw std::logic_error(sampler.name + ": its default randomizer is not one of its family's");
+      sampler.randomizers.clear();
+      for (Randomizer r : accepted) sampler.randomizers.emplace_back(randomizer_name(r));
     }
     return list;
   }();
@@ -114,6 +194,7 @@ PointSet generate_points(std::string_view name, const SamplerRequest& request) {
   const SamplerInfo& sampler = find_sampler(name);
   SamplerRequest resolved = request;
   resolved.randomize = validate_request(sampler, resolved);
+  resolved.randomizer = parse_randomizer(resolved.randomize);
   resolved.values = bind_params(sampler.name, sampler.params, request.params);
   return sampler.generate(resolved);
 }

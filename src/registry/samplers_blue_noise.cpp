@@ -80,7 +80,7 @@ SamplerInfo ranked_entry(const RankedEntry& e) {
       .max_dim = blue_noise_max_dims(base),
       .flags = {.frames_continue = true, .self_randomized = true},
       .properties = e.properties,
-      .randomizers = {"owen-hash"},
+      .randomization = {RandomizerFamily::seeded_owen_hash, Randomizer::owen_hash},
       .counts = "n = spp, 1 to 2^24 (powers of two give the base's 2^m-point structure per pixel)",
       .params = {params::integers("pixel", "the pixel x,y whose samples these are", "0,0", at_least(0), {2, 2}),
                  params::text("table",

@@ -56,7 +56,7 @@ LatticeSequence lattice_sequence_from(const SamplerRequest& request) {
 /// An index-addressable sequence from `start`, rotated under cp.
 template <class Sequence>
 PointSet fill_sequence(const Sequence& sequence, const SamplerRequest& request) {
-  const bool rotate = request.randomize == "cp";
+  const bool rotate = request.randomizer == Randomizer::cp;
   const CranleyPattersonRotation rotation(request.seed);
   const std::uint64_t start = request.start;
   return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
@@ -121,7 +121,7 @@ std::uint64_t search_korobov(std::uint64_t n, unsigned d, double gamma, unsigned
 }
 
 PointSet fill_lattice(const Rank1Lattice& lattice, const SamplerRequest& request) {
-  const bool rotate = request.randomize == "cp";
+  const bool rotate = request.randomizer == Randomizer::cp;
   const CranleyPattersonRotation rotation(request.seed);
   return fill_index_addressable(lattice.count(), lattice.dimensions(), request.threads,
                                 [&](std::uint64_t i, unsigned j) {
@@ -149,7 +149,7 @@ std::vector<SamplerInfo> lattices() {
       .min_dim = 2,
       .max_dim = 2,
       .properties = {"rank-1 lattice", "Latin (one point per row and column)"},
-      .randomizers = {"none", "cp"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1: the classic Fibonacci lattice for n = 1, 2, 3, 5, 8, 13, ..., 987, 1597, ...; "
                 "strict=1 accepts only those",
       .params = {params::flag("strict", "1: accept only Fibonacci numbers n (the classic construction)", "0")},
@@ -173,7 +173,7 @@ std::vector<SamplerInfo> lattices() {
       .min_dim = 1,
       .max_dim = Rank1Lattice::max_dimensions,
       .properties = {"rank-1 lattice", "Latin in every coordinate with gcd(z_j, n) = 1 (always for a= and the search)"},
-      .randomizers = {"none", "cp"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1; the Korobov search (no generator=, no a=) takes n x d <= 2^26",
       .params = {params::integers("generator", "generating vector z: d integers in [1, n)", "", at_least(1),
                                   {1, Rank1Lattice::max_dimensions}),
@@ -210,7 +210,7 @@ std::vector<SamplerInfo> lattices() {
       .max_dim = Kronecker::max_dimensions,
       .flags = {.index_addressable = true, .progressive = true},
       .properties = {"low-discrepancy", "three gap lengths per coordinate"},
-      .randomizers = {"none", "cp"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1",
       .params = {params::reals("alpha", "d reals, one per dimension (default: R_d of Roberts 2018)", "", open(0, 1),
                                {1, Kronecker::max_dimensions}),
@@ -231,7 +231,7 @@ std::vector<SamplerInfo> lattices() {
       .flags = {.index_addressable = true, .progressive = true},
       .properties = {"rank-1 lattice at n = 2^m",
                      "Latin at n = 2^m in every coordinate with odd g_j (all of the default)"},
-      .randomizers = {"none", "cp"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1; lattices at n = 2^m (the default vector is built for 2^10 <= n <= 2^20)",
       .params = {params::integers("generator", "generating vector g: d integers (default: CKN 2006, d <= 32)", "",
                                   at_least(1), {1, LatticeSequence::max_dimensions})},

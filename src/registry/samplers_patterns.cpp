@@ -92,7 +92,7 @@ static NQueens::Method n_queens_method(const SamplerRequest& request) {
 /// Applies the request's randomizer ("none" or "cp") to an index-addressable pattern.
 template <class Pattern>
 static PointSet fill_with_randomizer(const SamplerRequest& request, const Pattern& pattern) {
-  if (request.randomize == "cp") {
+  if (request.randomizer == Randomizer::cp) {
     const CranleyPattersonRotation rotation(request.seed);
     return fill_index_addressable(*request.n, request.d, request.threads,
                                   [&](std::uint64_t i, unsigned j) { return rotation(pattern.sample(i, j), j); });
@@ -146,7 +146,7 @@ static SamplerInfo latin_hypercube_entry(std::string name, std::string descripti
       .max_dim = 1u << 16,
       .flags = {.self_randomized = true},
       .properties = {"Latin (one point per 1/n interval in every coordinate)", "unbiased"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "any n >= 1",
       .params = {params::flag("centered", "1: points at the interval centres (scipy's scramble=False)", "0")},
       .validate = nullptr,
@@ -167,7 +167,7 @@ std::vector<SamplerInfo> patterns() {
       .max_dim = 1u << 16,
       .flags = {.index_addressable = true, .progressive = true, .self_randomized = true, .prefix_unbiased = {"none"}},
       .properties = {"unstratified"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "any n >= 1",
       .params = {},
       .validate = nullptr,
@@ -193,7 +193,7 @@ std::vector<SamplerInfo> patterns() {
       .max_dim = 1u << 16,
       .flags = {.index_addressable = true},
       .properties = {"stratified (one point per cell)", "deterministic"},
-      .randomizers = {"none", "cp"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = strata_counts,
       .params = {strata_schema},
       .validate = [](const SamplerRequest& request) { strata_of(request); },
@@ -209,7 +209,7 @@ std::vector<SamplerInfo> patterns() {
       .max_dim = 1u << 16,
       .flags = {.index_addressable = true, .self_randomized = true},
       .properties = {"stratified (one point per cell)", "unbiased"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = strata_counts,
       .params = {strata_schema},
       .validate = [](const SamplerRequest& request) { strata_of(request); },
@@ -235,7 +235,7 @@ std::vector<SamplerInfo> patterns() {
       .max_dim = 2,
       .flags = {.self_randomized = true},
       .properties = {"Latin in x and y", "one point per m x k stratum", "unbiased"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "any n >= 1 (m x k with m <= k closest to sqrt(n); m = 1 for prime n), or strata=mxk of product n",
       .params = {params::integers("strata",
                                   "columns x rows, e.g. 4x8 (product must equal n); default: closest to "
@@ -269,7 +269,7 @@ std::vector<SamplerInfo> patterns() {
       .flags = {.index_addressable = true, .self_randomized = true},
       .properties = {"Latin in y",
                      "Latin in x and one point per m x k stratum when n = m*k (m = floor(sqrt(n*aspect)))", "unbiased"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "any n in [1, 2^32 - 1]; fully stratified when n = m * ceil(n/m), e.g. squares and m(m+1)",
       .params = {params::real("aspect", "columns / rows of the strata (Kensler's a)", "1", above(0))},
       .validate = [](const SamplerRequest& request) { CorrelatedMultiJittered(*request.n, 0, aspect_of(request)); },
@@ -295,7 +295,7 @@ std::vector<SamplerInfo> patterns() {
       .properties = {"Latin in x and y (on the rotated grid under cp)",
                      "no two points in a diagonal of cells (none; cp: of the rotated, wrapped grid)",
                      "unbiased with cp, the default (none: only method=formula with gcd(n,6)=1)"},
-      .randomizers = {"cp", "none"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::cp},
       .counts = "n = 1 or n >= 4 (no n-queens solution exists for n = 2, 3); method=random: n <= 2^24",
       .params = {params::choice("method",
                                 "random (local search, well spread) or formula (explicit solutions on a few lines)",
@@ -319,7 +319,7 @@ std::vector<SamplerInfo> patterns() {
       .flags = {.self_randomized = true},
       .properties = {"orthogonal array of strength 2 (each 2D projection one point per m x m cell)",
                      "Latin square (each symbol once per row and column)", "unbiased"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts =
           "n = m^2 (m <= 65535; jacobson-matthews by default needs m^3 <= 2^28, i.e. m <= 645; steps= can lower it)",
       .params = {params::choice("method",
@@ -352,7 +352,7 @@ std::vector<SamplerInfo> patterns() {
       .max_dim = 2,
       .flags = {.index_addressable = true},
       .properties = {"low-discrepancy", "Latin in x", "(0,k,2)-net in base 2 when n = 2^k", "deterministic"},
-      .randomizers = {"none", "cp"},
+      .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1 (Zaremba's set exactly for n = 2^k)",
       .params = {},
       .validate = nullptr,

@@ -28,7 +28,8 @@ std::vector<SamplerInfo> pmj() {
       .max_dim = Pmj02::max_dimensions,
       .flags = {.index_addressable = true, .progressive = true, .self_randomized = true, .zero_two_net = true},
       .properties = {"(0,2)-sequence", "multi-jittered"},
-      .randomizers = {"none"},  // its own seeded randomness: a new seed is a new Owen-scrambled realization
+      // its own seeded randomness: a new seed is a new Owen-scrambled realization
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "any n >= 1 (every power-of-two prefix is a (0,k,2)-net)",
       .params = {},
       .validate = nullptr,
@@ -54,7 +55,7 @@ std::vector<SamplerInfo> pmj() {
       .max_dim = 2,
       .flags = {.progressive = true, .self_randomized = true, .zero_two_net = true},
       .properties = {"(0,2)-sequence", "multi-jittered", "blue noise (within the point set)"},
-      .randomizers = {"none"},  // its own seeded randomness, as pmj02
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},  // its own seeded randomness
       .counts = "any n >= 1 with start + n <= 2^31 (points are placed one after another: start + n are made)",
       .params = {params::integer("candidates",
                                  "candidates per point, the farthest from the points before it kept (1: plain "

@@ -103,7 +103,7 @@ std::vector<SamplerInfo> poisson() {
       .max_dim = PoissonDisk::max_dimensions,
       .flags = {.self_randomized = true},
       .properties = {"blue noise", "minimum distance >= radius", "maximal (radius alone)"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "radius alone: the maximal set (its size follows from the radius); n alone: exactly n points "
                 "(radius chosen from n); n and radius: exactly n points at distance >= radius, if the maximal set "
                 "has that many",
@@ -125,7 +125,7 @@ std::vector<SamplerInfo> poisson() {
       .max_dim = BestCandidate::max_dimensions,
       .flags = {.self_randomized = true},
       .properties = {"blue noise", "progressive (every prefix is a best-candidate set)"},
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = "any n >= 1 with candidates*n*(n-1)/2 <= 2^27 (d <= 2), 2^25 (d = 3), 2^23 (d = 4): "
                 "n <= 5181, 2591, 1295 for candidates=10",
       .params = {params::integer("candidates", "Mitchell's multiplier k: point i is the best of k*i candidates",

@@ -21,6 +21,7 @@
 /// each acts on the point's digits (the digit word), so nets stay nets.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "families.hpp"
 #include "stratum/randomizers/base2.hpp"
@@ -62,17 +63,44 @@ static PointSet fill_by_columns(std::uint64_t n, unsigned d, unsigned threads, c
   return points;
 }
 
-/// A function, not a namespace-scope vector: samplers() may be called during
-/// another translation unit's static initialization (the benchmarks register
-/// at start-up), before such a vector would be constructed.
-static std::vector<std::string> radical_inverse_randomizers() { return {"permute", "none", "owen", "xor", "cp"}; }
-
 /// fill_by_columns for a per-value sample(index, dim).
 template <class SampleFn>
 static PointSet fill_each(std::uint64_t n, unsigned d, unsigned threads, const SampleFn& sample) {
   return fill_by_columns(n, d, threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
     for (std::size_t k = 0; k < rows; ++k) out[k * d] = sample(row + k, j);
   });
+}
+
+/// The one dispatch of the base-b digit randomizers (family base_b_digits):
+/// calls use(scrambler) with the scrambler of request.randomizer (permute,
+/// xor or owen) over `bases` for digit words up to `max_word`; nullopt for
+/// none and cp, which act on the construction's value, not its digits.
+template <class Use>
+static std::optional<PointSet> with_digit_scrambler(const SamplerRequest& request,
+                                                    const std::vector<std::uint32_t>& bases, std::uint64_t max_word,
+                                                    const Use& use) {
+  switch (request.randomizer) {
+    case Randomizer::permute:
+      return use(RandomDigitPermutations(request.seed, bases, max_word));
+    case Randomizer::xor_shift:
+      return use(BaseBDigitalShift(request.seed, bases, max_word));
+    case Randomizer::owen:
+      return use(BaseBOwenScrambler(request.seed, bases));
+    default:
+      return std::nullopt;
+  }
+}
+
+/// out[k·stride] = scrambler.sample(first + k, dim) for k < count: the
+/// tabulated scramblers' fill where they have one.
+template <class Scrambler>
+static void fill_scrambled(const Scrambler& scrambler, std::uint64_t first, std::size_t count, unsigned dim,
+                           double* out, std::size_t stride) {
+  if constexpr (requires { scrambler.fill(first, count, dim, out, stride); }) {
+    scrambler.fill(first, count, dim, out, stride);
+  } else {
+    for (std::size_t k = 0; k < count; ++k) out[k * stride] = scrambler.sample(first + k, dim);
+  }
 }
 
 /// Halton's bases: the `bases` parameter when given (one per dimension),
@@ -95,21 +123,16 @@ static void validate_halton(const SamplerRequest& request) {
 static PointSet generate_halton(const SamplerRequest& request) {
   const std::uint64_t n = *request.n, start = request.start;
   const unsigned d = request.d;
-  const std::string& randomize = request.randomize;
   const std::vector<std::uint32_t> bases = halton_bases(request);
-  const auto tabulated = [&](const auto& scrambler) {
+  auto scrambled = with_digit_scrambler(request, bases, start + n - 1, [&](const auto& scrambler) {
     return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
-      scrambler.fill(start + row, rows, j, out, d);
+      fill_scrambled(scrambler, start + row, rows, j, out, d);
     });
-  };
-  if (randomize == "permute") return tabulated(RandomDigitPermutations(request.seed, bases, start + n - 1));
-  if (randomize == "xor") return tabulated(BaseBDigitalShift(request.seed, bases, start + n - 1));
-  if (randomize == "owen") {
-    const BaseBOwenScrambler owen(request.seed, bases);
-    return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return owen.sample(start + i, j); });
-  }
+  });
+  if (scrambled) return std::move(*scrambled);
+  const Randomizer randomizer = request.randomizer;
   const CranleyPattersonRotation rotation(request.seed);
-  const bool rotate = randomize == "cp";
+  const bool rotate = randomizer == Randomizer::cp;
   if (request.values.has("bases")) {  // radical inverses in the given bases
     std::vector<std::uint64_t> reciprocals(d);
     for (unsigned j = 0; j < d; ++j) reciprocals[j] = radical_inverse_reciprocal(bases[j]);
@@ -136,14 +159,14 @@ static std::uint64_t fraction_bits(std::uint64_t i, std::uint64_t n) {
 static PointSet generate_hammersley(const SamplerRequest& request) {
   const std::uint64_t n = *request.n;
   const unsigned d = request.d;
-  const std::string& randomize = request.randomize;
+  const Randomizer randomizer = request.randomizer;
   const Hammersley hammersley(n, d);
-  if (randomize == "cp") {
+  if (randomizer == Randomizer::cp) {
     const CranleyPattersonRotation rotation(request.seed);
     return fill_each(n, d, request.threads,
                      [&](std::uint64_t i, unsigned j) { return rotation(hammersley.sample(i, j), j); });
   }
-  if (randomize == "none")
+  if (randomizer == Randomizer::none)
     return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return hammersley.sample(i, j); });
   // permute, xor, owen: i/N's binary digits scrambled with a key of its own
   // (independent of the radical inverses' scramblers). In base 2 a random
@@ -152,23 +175,18 @@ static PointSet generate_hammersley(const SamplerRequest& request) {
   const std::uint64_t key = hash64(request.seed, 0x68616d30ULL /* "ham0" */);
   const DigitalShift shift(key);
   const auto nested = OwenScrambler(key).dimension(0);
-  const bool owen = randomize == "owen";
+  const bool owen = randomizer == Randomizer::owen;
   const auto first = [&](std::uint64_t i) {
     const std::uint64_t bits = fraction_bits(i, n);
     return bits_to_double(owen ? nested(bits) : shift(bits, 0));
   };
   if (d == 1) return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned) { return first(i); });
-  const auto tabulated = [&](const auto& scrambler) {
+  return std::move(*with_digit_scrambler(request, prime_bases(d - 1), n - 1, [&](const auto& scrambler) {
     return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
-      if (j > 0) return scrambler.fill(row, rows, j - 1, out, d);
+      if (j > 0) return fill_scrambled(scrambler, row, rows, j - 1, out, d);
       for (std::size_t k = 0; k < rows; ++k) out[k * d] = first(row + k);
     });
-  };
-  if (randomize == "permute") return tabulated(RandomDigitPermutations(request.seed, prime_bases(d - 1), n - 1));
-  if (randomize == "xor") return tabulated(BaseBDigitalShift(request.seed, prime_bases(d - 1), n - 1));
-  const BaseBOwenScrambler scrambler(request.seed, prime_bases(d - 1));
-  return fill_each(n, d, request.threads,
-                   [&](std::uint64_t i, unsigned j) { return j == 0 ? first(i) : scrambler.sample(i, j - 1); });
+  }));
 }
 
 /// Faure points with the request's randomizer applied to the digit words of
@@ -186,12 +204,9 @@ static PointSet generate_faure(const SamplerRequest& request) {
     return fill_each(n, d, request.threads,
                      [&](std::uint64_t i, unsigned j) { return scrambler.sample(faure.digit_word(start + i, j), j); });
   };
-  const std::string& randomize = request.randomize;
-  if (randomize == "owen") return scrambled(BaseBOwenScrambler(request.seed, bases));
-  if (randomize == "permute") return scrambled(RandomDigitPermutations(request.seed, bases, max_word));
-  if (randomize == "xor") return scrambled(BaseBDigitalShift(request.seed, bases, max_word));
+  if (auto points = with_digit_scrambler(request, bases, max_word, scrambled)) return std::move(*points);
   const CranleyPattersonRotation rotation(request.seed);
-  const bool rotate = randomize == "cp";
+  const bool rotate = request.randomizer == Randomizer::cp;
   return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) {
     const double x = faure.sample(start + i, j);
     return rotate ? rotation(x, j) : x;
@@ -211,7 +226,7 @@ std::vector<SamplerInfo> sequences() {
       .max_dim = Halton::max_dimensions,
       .flags = {.index_addressable = true, .progressive = true},
       .properties = {"low-discrepancy", "mixed-base elementary intervals (none, permute, owen, xor)"},
-      .randomizers = radical_inverse_randomizers(),
+      .randomization = {RandomizerFamily::base_b_digits, Randomizer::permute},
       .counts = "any n >= 1",
       .params = {params::integers("bases",
                                   "one radical-inverse base per dimension (default: the first d primes); "
@@ -233,7 +248,7 @@ std::vector<SamplerInfo> sequences() {
       .properties = {"low-discrepancy", "Latin in dimension 0 (none, cp; permute, xor, owen at N = 2^k)",
                      "elementary intervals at N = b^k (none; permute, owen, xor: of (i/N, phi_2(i)) at N = 2^k)",
                      "unbiased (but none)"},
-      .randomizers = radical_inverse_randomizers(),
+      .randomization = {RandomizerFamily::base_b_digits, Randomizer::permute},
       .counts = "any n >= 1",
       .params = {},
       .validate = nullptr,
@@ -251,7 +266,7 @@ std::vector<SamplerInfo> sequences() {
       .flags = {.index_addressable = true, .progressive = true},
       .properties = {"low-discrepancy",
                      "(0,m,s)-net in base b for every block of b^m points (none, owen, permute, xor)"},
-      .randomizers = {"owen", "none", "permute", "xor", "cp"},
+      .randomization = {RandomizerFamily::base_b_digits, Randomizer::owen},
       .counts = "any n >= 1; nets at n = b^m",
       .params = {},
       .validate = nullptr,

@@ -339,20 +339,21 @@ PointSet generate_sobol(const SamplerRequest& request) {
   const unsigned d = request.d;
   const Sobol::Order order = parse_order(request);
   const Layout layout = layout_for(d);
-  const std::string& randomize = request.randomize;
+  const Randomizer randomizer = request.randomizer;
   const std::uint64_t mask = parse_digit_mask(request);
   // Keeping the first b digits is linear: masked columns and shift (plain finish).
   const auto identity = [mask](unsigned, std::uint64_t word) { return word & mask; };
   const std::vector<std::uint64_t> zeros(d, 0);
 
-  if (randomize == "none") return walk(request, order, transformed_columns(d, identity), zeros, Finish{}, layout);
-  if (randomize == "xor") {  // the shift commutes with the walk: start from it
+  if (randomizer == Randomizer::none)
+    return walk(request, order, transformed_columns(d, identity), zeros, Finish{}, layout);
+  if (randomizer == Randomizer::xor_shift) {  // the shift commutes with the walk: start from it
     const DigitalShift shift(request.seed);
     std::vector<std::uint64_t> offsets(d);
     for (unsigned j = 0; j < d; ++j) offsets[j] = shift.shift(j) & mask;
     return walk(request, order, transformed_columns(d, identity), offsets, Finish{}, layout);
   }
-  if (randomize == "lms") {  // L is linear: walk with scrambled columns from the shift
+  if (randomizer == Randomizer::lms) {  // L is linear: walk with scrambled columns from the shift
     const LinearMatrixScramble lms(request.seed);
     std::vector<LinearMatrixScramble::Dimension> dims;
     std::vector<std::uint64_t> offsets(d);
@@ -364,7 +365,7 @@ PointSet generate_sobol(const SamplerRequest& request) {
         transformed_columns(d, [&](unsigned j, std::uint64_t word) { return dims[j].linear(word) & mask; });
     return walk(request, order, columns, offsets, Finish{}, layout);
   }
-  if (randomize == "owen-hash") {  // walk the bit-reversed words, scramble, reverse once
+  if (randomizer == Randomizer::owen_hash) {  // walk the bit-reversed words, scramble, reverse once
     const HashOwenScrambler owen(request.seed);
     std::vector<std::uint64_t> addends(d), multipliers(d);
     for (unsigned j = 0; j < d; ++j) {
@@ -380,7 +381,7 @@ PointSet generate_sobol(const SamplerRequest& request) {
                        .mask = mask},
                 layout);
   }
-  if (randomize == "cp") {
+  if (randomizer == Randomizer::cp) {
     const CranleyPattersonRotation rotation(request.seed);
     std::vector<double> shifts(d);
     for (unsigned j = 0; j < d; ++j) shifts[j] = rotation.shift(j);
@@ -392,7 +393,7 @@ PointSet generate_sobol(const SamplerRequest& request) {
         Finish{.kind = Finish::rotate, .shift = tiles.data(), .truncation = bits < 53 ? std::ldexp(1.0, bits) : 0},
         layout);
   }
-  if (randomize == "owen") {  // 64 hashes per coordinate: scalar
+  if (randomizer == Randomizer::owen) {  // 64 hashes per coordinate: scalar
     const OwenScrambler owen(request.seed);
     std::vector<OwenScrambler::Dimension> dims;
     for (unsigned j = 0; j < d; ++j) dims.push_back(owen.dimension(j));
@@ -401,7 +402,7 @@ PointSet generate_sobol(const SamplerRequest& request) {
     return walk(request, order, transformed_columns(d, unmasked), zeros,
                 Finish{.kind = Finish::owen, .owen_dims = tiles.data(), .mask = mask}, layout);
   }
-  throw invalid_argument("randomize", randomize, "unknown to the Sobol generator");
+  throw invalid_argument("randomize", std::string(randomizer_name(randomizer)), "unknown to the Sobol generator");
 }
 
 // Functions, not namespace-scope objects: the registry is built on first use,
@@ -461,7 +462,7 @@ std::vector<SamplerInfo> sobol() {
       .flags = {.index_addressable = true, .progressive = true, .zero_two_net = true, .prefix_unbiased = {"owen-hash"}},
       .properties = {"low-discrepancy", "(t,s)-sequence in base 2", "(0,2)-sequence in dims 0-1",
                      "powers of two give (t,m,s)-nets", "64-bit indices and digits"},
-      .randomizers = {"owen-hash", "none", "owen", "xor", "lms", "cp"},
+      .randomization = {RandomizerFamily::base2_digits, Randomizer::owen_hash},
       .counts = "any n >= 1 (powers of two give (t,m,s)-nets)",
       .params = {order_param(), bits_param()},
       .validate = nullptr,
@@ -479,7 +480,7 @@ std::vector<SamplerInfo> sobol() {
       .max_dim = 64,
       .flags = {.frames_continue = true, .self_randomized = true},
       .properties = {"(0,m,2)-net per pixel in each dimension pair", "blue-noise error across pixels"},
-      .randomizers = {"owen-hash"},
+      .randomization = {RandomizerFamily::seeded_owen_hash, Randomizer::owen_hash},
       .counts = "n = spp, a power of 2 up to 2^24",
       .params = {params::integers("pixel", "the pixel x,y whose samples these are", "0,0", at_least(0), {2, 2}),
                  params::integer("resolution", "the image's larger side in pixels (sets the Morton levels)", "1",
@@ -498,7 +499,7 @@ std::vector<SamplerInfo> sobol() {
       .max_dim = 2,
       .flags = {.index_addressable = true, .progressive = true, .zero_two_net = true},
       .properties = {"(0,2)-sequence", "(0,m,2)-net at every power of two"},
-      .randomizers = {"owen-hash", "none", "owen", "xor", "lms"},
+      .randomization = {RandomizerFamily::base2_digits, Randomizer::owen_hash},
       .counts = "any n >= 1 (powers of two give (0,m,2)-nets)",
       .params = {order_param(), bits_param()},
       .validate = nullptr,

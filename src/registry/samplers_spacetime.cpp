@@ -42,7 +42,7 @@ SamplerInfo spacetime_entry(std::string name, std::string description, std::vect
       .max_dim = 3,
       .flags = {.self_randomized = true, .space_time = true},
       .properties = std::move(properties),
-      .randomizers = {"none"},
+      .randomization = {RandomizerFamily::seeded, Randomizer::none},
       .counts = std::move(counts),
       .params = {},
       .validate = std::move(validate),

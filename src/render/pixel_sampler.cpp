@@ -72,11 +72,12 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
   arrays_continue_ = info.flags.progressive;
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
-  if (name == "random" && (r.empty() || r == "none")) fast_ = Fast::random;
-  if (name == "sobol" && (r.empty() || r == "owen-hash")) fast_ = Fast::sobol_owen_hash;
-  if (name == "jittered" && (r.empty() || r == "none")) fast_ = Fast::jittered;
-  if (name == "pmj02" && (r.empty() || r == "none")) fast_ = Fast::pmj02;
-  halton_permute_ = name == "halton" && (r.empty() || r == "permute");
+  const Randomizer randomizer = parse_randomizer(r.empty() ? info.randomizers.front() : r);
+  if (name == "random" && randomizer == Randomizer::none) fast_ = Fast::random;
+  if (name == "sobol" && randomizer == Randomizer::owen_hash) fast_ = Fast::sobol_owen_hash;
+  if (name == "jittered" && randomizer == Randomizer::none) fast_ = Fast::jittered;
+  if (name == "pmj02" && randomizer == Randomizer::none) fast_ = Fast::pmj02;
+  halton_permute_ = name == "halton" && randomizer == Randomizer::permute;
   has_spacetime_ = !spacetime_.empty();
   if (fast_ == Fast::sobol_owen_hash) sobol_ = &sobol_2d();
   halton_direct_ = halton_permute_ && offset_ + settings_.spp <= halton_direct_max;

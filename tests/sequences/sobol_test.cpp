@@ -461,8 +461,13 @@ TEST(SobolRegistry, DefaultIsOwenHashAndZeroTwoIsTheFirstTwoDimensions) {
     }
   request.d = 3;
   EXPECT_THROW(generate_points("zero-two", request), invalid_argument);
-  request.randomize = "cp";
   request.d = 2;
+  // The base-2 family's randomizers, as Sobol' (cp too: the same rotated points).
+  request.randomize = "cp";
+  const PointSet rotated = generate_points("zero-two", request), sobol_rotated = generate_points("sobol", request);
+  for (std::uint64_t i = 0; i < 300; ++i)
+    for (unsigned j = 0; j < 2; ++j) EXPECT_EQ(rotated(i, j), sobol_rotated(i, j));
+  request.randomize = "permute";  // a base-b randomizer
   EXPECT_THROW(generate_points("zero-two", request), invalid_argument);
 }
 

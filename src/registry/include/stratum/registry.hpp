@@ -21,13 +21,55 @@
 
 namespace stratum {
 
+/// Every randomizer as a value: a generator switches on it once (one
+/// switch per construction), the faces spell it by randomizer_name.
+enum class Randomizer { none, owen, owen_hash, xor_shift, lms, permute, cp };
+
+/// The structure of a sampler's construction, which decides the
+/// randomizers that keep it (accepted_randomizers): the randomizers a
+/// sampler accepts follow from its family, never from a list of its own.
+enum class RandomizerFamily {
+  /// A digital construction in base 2 (Sobol'): owen-hash, owen, xor and lms
+  /// act on its binary digits and keep its nets; cp rotates it.
+  base2_digits,
+  /// Digits in a base b (radical inverses, Faure): permute, owen and xor act
+  /// on its base-b digits and keep its elementary intervals; cp rotates it.
+  base_b_digits,
+  /// No digit structure (lattices, grids, Kronecker): cp, a rotation modulo 1.
+  rotation,
+  /// Its construction draws from the seed already (jittered, Poisson disk,
+  /// PMJ): a rotation would break its strata, so none.
+  seeded,
+  /// A pixel sampler whose construction includes Owen hash scrambling
+  /// (zsobol, the ranked blue-noise samplers): owen-hash.
+  seeded_owen_hash,
+};
+
+/// How a sampler is randomized: its family and its default randomizer.
+struct Randomization {
+  RandomizerFamily family = RandomizerFamily::seeded;
+  Randomizer default_randomizer = Randomizer::none;
+};
+
+/// The name the faces use ("owen-hash", "xor", …).
+std::string_view randomizer_name(Randomizer randomizer);
+/// The randomizer called `name`; throws invalid_argument naming "randomize" and listing the names.
+Randomizer parse_randomizer(std::string_view name);
+/// The family's name in listings ("base2-digits", "base-b-digits", "rotation", "seeded", "seeded-owen-hash").
+std::string_view randomizer_family_name(RandomizerFamily family);
+/// The randomizers `randomization`'s family accepts, its default first.
+std::vector<Randomizer> accepted_randomizers(const Randomization& randomization);
+
 /// What a caller asks of a sampler.
 struct SamplerRequest {
   std::optional<std::uint64_t> n;  ///< absent only where a sampler can choose (maximal Poisson disk)
   unsigned d = 2;
   std::uint64_t seed = 0;
-  std::uint64_t start = 0;       ///< index of the first point (sequences only; scipy's fast_forward)
-  std::string randomize;         ///< empty: the sampler's default
+  std::uint64_t start = 0;  ///< index of the first point (sequences only; scipy's fast_forward)
+  std::string randomize;    ///< empty: the sampler's default
+  /// `randomize` resolved (the default where empty) by validate_request
+  /// and generate_points; generators switch on it.
+  Randomizer randomizer = Randomizer::none;
   std::optional<double> radius;  ///< Poisson disk and friends
   unsigned threads = 1;
   std::map<std::string, std::string> params;  ///< as text ("periodic=1"): every face passes it through unchanged
@@ -81,11 +123,11 @@ struct SamplerInfo {
   unsigned min_dim = 1;
   unsigned max_dim = 1;
   SamplerFlags flags{};
-  std::vector<std::string> properties;   ///< in words, beside the flags (listings: property_words)
-  std::vector<std::string> randomizers;  ///< accepted values of --randomize; front() is the default
-  std::string counts;                    ///< which n the sampler takes, in words
-  bool n_optional = false;               ///< may n be left out (then `radius` decides)?
-  std::vector<Param> params;             ///< the schema of `SamplerRequest::params`
+  std::vector<std::string> properties;  ///< in words, beside the flags (listings: property_words)
+  Randomization randomization{};        ///< decides `randomizers`
+  std::string counts;                   ///< which n the sampler takes, in words
+  bool n_optional = false;              ///< may n be left out (then `radius` decides)?
+  std::vector<Param> params;            ///< the schema of `SamplerRequest::params`
   /// Checks the sampler-specific part of a request (n it can take, params);
   /// throws stratum::invalid_argument.
   std::function<void(const SamplerRequest&)> validate;
@@ -94,6 +136,9 @@ struct SamplerInfo {
   std::function<std::optional<std::uint64_t>(const SamplerRequest&)> count;
   /// Fills a validated request's points.
   std::function<PointSet(const SamplerRequest&)> generate;
+  /// The accepted values of --randomize, front() the default: derived from
+  /// `randomization` when the registry is built (accepted_randomizers).
+  std::vector<std::string> randomizers{};
 };
 
 /// Every randomizer name with a one-line description.
