@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "families.hpp"
+#include "support.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum {
@@ -99,6 +100,11 @@ const std::vector<std::pair<std::string, std::string>>& randomizers() {
   return list;
 }
 
+void PointGenerator::fill(std::uint64_t first, std::uint64_t count, double* out) const {
+  for (std::uint64_t k = 0; k < count; ++k)
+    for (unsigned j = 0; j < dimensions_; ++j) out[k * dimensions_ + j] = sample_(first + k, j);
+}
+
 const std::vector<SamplerInfo>& samplers() {
   static const std::vector<SamplerInfo> all = [] {
     std::vector<SamplerInfo> list;
@@ -112,6 +118,13 @@ const std::vector<SamplerInfo>& samplers() {
       const std::vector<Randomizer> accepted = accepted_randomizers(sampler.randomization);
       if (accepted.empty())  // a programming error in an entry: fails every test at once
         throw std::logic_error(sampler.name + ": its default randomizer is not one of its family's");
+      if (!sampler.generate && sampler.bind)  // sets filled from the generator, rows in parallel
+        sampler.generate = [bind = sampler.bind](const SamplerRequest& request) {
+          const PointGenerator generator = bind(request);
+          return registry_support::fill_index_addressable(
+              *request.n, request.d, request.threads,
+              [&](std::uint64_t i, unsigned j) { return generator.sample(request.start + i, j); });
+        };
       sampler.randomizers.clear();
       for (Randomizer r : accepted) sampler.randomizers.emplace_back(randomizer_name(r));
     }
@@ -190,13 +203,26 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
   return randomize;
 }
 
-PointSet generate_points(std::string_view name, const SamplerRequest& request) {
-  const SamplerInfo& sampler = find_sampler(name);
+/// The request as the sampler's generate and bind read it: validated,
+/// randomizer resolved, parameters bound.
+static SamplerRequest resolved_request(const SamplerInfo& sampler, const SamplerRequest& request) {
   SamplerRequest resolved = request;
   resolved.randomize = validate_request(sampler, resolved);
   resolved.randomizer = parse_randomizer(resolved.randomize);
   resolved.values = bind_params(sampler.name, sampler.params, request.params);
-  return sampler.generate(resolved);
+  return resolved;
+}
+
+PointGenerator bind_generator(std::string_view name, const SamplerRequest& request) {
+  const SamplerInfo& sampler = find_sampler(name);
+  require(static_cast<bool>(sampler.bind), "sampler", sampler.name,
+          "has no per-point generator: its points are made as a whole set (generate_points)");
+  return sampler.bind(resolved_request(sampler, request));
+}
+
+PointSet generate_points(std::string_view name, const SamplerRequest& request) {
+  const SamplerInfo& sampler = find_sampler(name);
+  return sampler.generate(resolved_request(sampler, request));
 }
 
 }  // namespace stratum

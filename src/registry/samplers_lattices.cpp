@@ -54,19 +54,6 @@ LatticeSequence lattice_sequence_from(const SamplerRequest& request) {
 }
 
 /// An index-addressable sequence from `start`, rotated under cp.
-template <class Sequence>
-PointSet fill_sequence(const Sequence& sequence, const SamplerRequest& request) {
-  const bool rotate = request.randomizer == Randomizer::cp;
-  const CranleyPattersonRotation rotation(request.seed);
-  const std::uint64_t start = request.start;
-  return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
-    const double value = sequence.sample(start + i, j);
-    return rotate ? rotation(value, j) : value;
-  });
-}
-
-/// The generating vector a request asks for, or nullopt when it asks for the
-/// search (no generator=, no a=). Throws invalid_argument naming the param.
 std::optional<std::array<std::uint64_t, Rank1Lattice::max_dimensions>> explicit_generator(
     const SamplerRequest& request) {
   const bool generator = request.values.has("generator");
@@ -217,7 +204,8 @@ std::vector<SamplerInfo> lattices() {
                  params::real("offset", "the offset s added in every dimension", "0", half_open(0, 1))},
       .validate = [](const SamplerRequest& request) { kronecker_from(request); },
       .count = requested_count,
-      .generate = [](const SamplerRequest& request) { return fill_sequence(kronecker_from(request), request); },
+      .generate = generate_rotated(kronecker_from),
+      .bind = bind_rotated(kronecker_from),
   });
 
   list.push_back({
@@ -237,7 +225,8 @@ std::vector<SamplerInfo> lattices() {
                                   at_least(1), {1, LatticeSequence::max_dimensions})},
       .validate = [](const SamplerRequest& request) { lattice_sequence_from(request); },
       .count = requested_count,
-      .generate = [](const SamplerRequest& request) { return fill_sequence(lattice_sequence_from(request), request); },
+      .generate = generate_rotated(lattice_sequence_from),
+      .bind = bind_rotated(lattice_sequence_from),
   });
 
   return list;

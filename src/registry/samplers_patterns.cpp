@@ -89,18 +89,6 @@ static NQueens::Method n_queens_method(const SamplerRequest& request) {
   return request.values.text("method") == "formula" ? NQueens::Method::formula : NQueens::Method::random;
 }
 
-/// Applies the request's randomizer ("none" or "cp") to an index-addressable pattern.
-template <class Pattern>
-static PointSet fill_with_randomizer(const SamplerRequest& request, const Pattern& pattern) {
-  if (request.randomizer == Randomizer::cp) {
-    const CranleyPattersonRotation rotation(request.seed);
-    return fill_index_addressable(*request.n, request.d, request.threads,
-                                  [&](std::uint64_t i, unsigned j) { return rotation(pattern.sample(i, j), j); });
-  }
-  return fill_index_addressable(*request.n, request.d, request.threads,
-                                [&](std::uint64_t i, unsigned j) { return pattern.sample(i, j); });
-}
-
 /// Dimensions in blocks of 8: their permutations (32-bit cells when n fits),
 /// then the rows, so the writes are whole cache lines and each row's hash
 /// is shared by the block's coordinates (the points of LatinHypercube::generate).
@@ -155,6 +143,18 @@ static SamplerInfo latin_hypercube_entry(std::string name, std::string descripti
   };
 }
 
+/// The index-addressable patterns' constructions, for generate_rotated and bind_rotated.
+static RandomPattern random_pattern(const SamplerRequest& request) { return RandomPattern(request.seed); }
+static Grid grid_pattern(const SamplerRequest& request) { return Grid(strata_of(request)); }
+static Jittered jittered_pattern(const SamplerRequest& request) { return Jittered(strata_of(request), request.seed); }
+static CorrelatedMultiJittered cmj_pattern(const SamplerRequest& request) {
+  return CorrelatedMultiJittered(*request.n, request.seed, aspect_of(request));
+}
+static NQueens n_queens_pattern(const SamplerRequest& request) {
+  return NQueens(*request.n, request.seed, n_queens_method(request));
+}
+static Zaremba zaremba_pattern(const SamplerRequest& request) { return Zaremba(*request.n); }
+
 std::vector<SamplerInfo> patterns() {
   std::vector<SamplerInfo> list;
 
@@ -172,13 +172,8 @@ std::vector<SamplerInfo> patterns() {
       .params = {},
       .validate = nullptr,
       .count = requested_count,
-      .generate =
-          [](const SamplerRequest& request) {
-            const RandomPattern random(request.seed);
-            const std::uint64_t start = request.start;
-            return fill_index_addressable(*request.n, request.d, request.threads,
-                                          [&](std::uint64_t i, unsigned j) { return random.sample(start + i, j); });
-          },
+      .generate = generate_rotated(random_pattern),
+      .bind = bind_rotated(random_pattern),
   });
 
   const Param strata_schema =
@@ -198,7 +193,8 @@ std::vector<SamplerInfo> patterns() {
       .params = {strata_schema},
       .validate = [](const SamplerRequest& request) { strata_of(request); },
       .count = requested_count,
-      .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, Grid(strata_of(request))); },
+      .generate = generate_rotated(grid_pattern),
+      .bind = bind_rotated(grid_pattern),
   });
 
   list.push_back({
@@ -214,10 +210,8 @@ std::vector<SamplerInfo> patterns() {
       .params = {strata_schema},
       .validate = [](const SamplerRequest& request) { strata_of(request); },
       .count = requested_count,
-      .generate =
-          [](const SamplerRequest& request) {
-            return fill_with_randomizer(request, Jittered(strata_of(request), request.seed));
-          },
+      .generate = generate_rotated(jittered_pattern),
+      .bind = bind_rotated(jittered_pattern),
   });
 
   list.push_back(latin_hypercube_entry(
@@ -274,10 +268,8 @@ std::vector<SamplerInfo> patterns() {
       .params = {params::real("aspect", "columns / rows of the strata (Kensler's a)", "1", above(0))},
       .validate = [](const SamplerRequest& request) { CorrelatedMultiJittered(*request.n, 0, aspect_of(request)); },
       .count = requested_count,
-      .generate =
-          [](const SamplerRequest& request) {
-            return fill_with_randomizer(request, CorrelatedMultiJittered(*request.n, request.seed, aspect_of(request)));
-          },
+      .generate = generate_rotated(cmj_pattern),
+      .bind = bind_rotated(cmj_pattern),
   });
 
   list.push_back({
@@ -302,10 +294,8 @@ std::vector<SamplerInfo> patterns() {
                                 "random", {"random", "formula"})},
       .validate = [](const SamplerRequest& request) { NQueens::check(*request.n, n_queens_method(request)); },
       .count = requested_count,
-      .generate =
-          [](const SamplerRequest& request) {
-            return fill_with_randomizer(request, NQueens(*request.n, request.seed, n_queens_method(request)));
-          },
+      .generate = generate_rotated(n_queens_pattern),
+      .bind = bind_rotated(n_queens_pattern),
   });
 
   list.push_back({
@@ -357,7 +347,8 @@ std::vector<SamplerInfo> patterns() {
       .params = {},
       .validate = nullptr,
       .count = requested_count,
-      .generate = [](const SamplerRequest& request) { return fill_with_randomizer(request, Zaremba(*request.n)); },
+      .generate = generate_rotated(zaremba_pattern),
+      .bind = bind_rotated(zaremba_pattern),
   });
 
   return list;

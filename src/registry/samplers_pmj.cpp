@@ -13,6 +13,8 @@ namespace stratum::registry_families {
 
 using namespace registry_support;
 
+static Pmj02 pmj02_of(const SamplerRequest& request) { return Pmj02(request.d, request.seed); }
+
 std::vector<SamplerInfo> pmj() {
   std::vector<SamplerInfo> list;
 
@@ -34,13 +36,8 @@ std::vector<SamplerInfo> pmj() {
       .params = {},
       .validate = nullptr,
       .count = requested_count,
-      .generate =
-          [](const SamplerRequest& request) {
-            const Pmj02 pmj(request.d, request.seed);
-            return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
-              return pmj.sample(request.start + i, j);
-            });
-          },
+      .generate = generate_rotated(pmj02_of),
+      .bind = bind_rotated(pmj02_of),
   });
 
   list.push_back({

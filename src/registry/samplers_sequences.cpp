@@ -21,6 +21,7 @@
 /// each acts on the point's digits (the digit word), so nets stay nets.
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "families.hpp"
@@ -76,9 +77,9 @@ static PointSet fill_each(std::uint64_t n, unsigned d, unsigned threads, const S
 /// xor or owen) over `bases` for digit words up to `max_word`; nullopt for
 /// none and cp, which act on the construction's value, not its digits.
 template <class Use>
-static std::optional<PointSet> with_digit_scrambler(const SamplerRequest& request,
-                                                    const std::vector<std::uint32_t>& bases, std::uint64_t max_word,
-                                                    const Use& use) {
+static auto with_digit_scrambler(const SamplerRequest& request, const std::vector<std::uint32_t>& bases,
+                                 std::uint64_t max_word, const Use& use)
+    -> std::optional<decltype(use(BaseBOwenScrambler(request.seed, bases)))> {
   switch (request.randomizer) {
     case Randomizer::permute:
       return use(RandomDigitPermutations(request.seed, bases, max_word));
@@ -148,6 +149,31 @@ static PointSet generate_halton(const SamplerRequest& request) {
   return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return halton.sample(start + i, j); });
 }
 
+/// Halton's generator: the same points as generate_halton, one at a time.
+static PointGenerator bind_halton(const SamplerRequest& request) {
+  const std::vector<std::uint32_t> bases = halton_bases(request);
+  const std::uint64_t max_index = request.start + *request.n - 1;
+  auto scrambled = with_digit_scrambler(request, bases, max_index, [&](const auto& scrambler) {
+    auto shared = std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler);
+    return PointGenerator(request.d, [shared](std::uint64_t i, unsigned j) { return shared->sample(i, j); });
+  });
+  if (scrambled) return std::move(*scrambled);
+  const CranleyPattersonRotation rotation(request.seed);
+  const bool rotate = request.randomizer == Randomizer::cp;
+  if (request.values.has("bases")) {  // radical inverses in the given bases
+    std::vector<std::uint64_t> reciprocals(request.d);
+    for (unsigned j = 0; j < request.d; ++j) reciprocals[j] = radical_inverse_reciprocal(bases[j]);
+    return PointGenerator(request.d, [bases, reciprocals, rotation, rotate](std::uint64_t i, unsigned j) {
+      const double x = radical_inverse(bases[j], i, reciprocals[j]);
+      return rotate ? rotation(x, j) : x;
+    });
+  }
+  return PointGenerator(request.d, [halton = Halton(request.d), rotation, rotate](std::uint64_t i, unsigned j) {
+    const double x = halton.sample(i, j);
+    return rotate ? rotation(x, j) : x;
+  });
+}
+
 /// i/N as a 64-bit binary fraction, floor(i · 2^64 / N): exact at N = 2^k.
 static std::uint64_t fraction_bits(std::uint64_t i, std::uint64_t n) {
   return static_cast<std::uint64_t>((static_cast<unsigned __int128>(i) << 64) / n);
@@ -189,28 +215,28 @@ static PointSet generate_hammersley(const SamplerRequest& request) {
   }));
 }
 
-/// Faure points with the request's randomizer applied to the digit words of
-/// indices start .. start+n−1.
-static PointSet generate_faure(const SamplerRequest& request) {
-  const std::uint64_t n = *request.n, start = request.start;
+/// Faure's generator: the request's randomizer applied to the digit words
+/// of each index (the registry fills sets from it).
+static PointGenerator bind_faure(const SamplerRequest& request) {
   const unsigned d = request.d;
   const Faure faure(d);
   const std::vector<std::uint32_t> bases(d, faure.base());
   // Digit words of indices < b^k are < b^k: the tables' range.
   unsigned __int128 bound = 1;
-  for (std::uint64_t last = start + n - 1; last != 0; last /= faure.base()) bound *= faure.base();
+  for (std::uint64_t last = request.start + *request.n - 1; last != 0; last /= faure.base()) bound *= faure.base();
   const std::uint64_t max_word = bound > ~std::uint64_t{0} ? ~std::uint64_t{0} : static_cast<std::uint64_t>(bound - 1);
-  const auto scrambled = [&](const auto& scrambler) {
-    return fill_each(n, d, request.threads,
-                     [&](std::uint64_t i, unsigned j) { return scrambler.sample(faure.digit_word(start + i, j), j); });
-  };
-  if (auto points = with_digit_scrambler(request, bases, max_word, scrambled)) return std::move(*points);
-  const CranleyPattersonRotation rotation(request.seed);
-  const bool rotate = request.randomizer == Randomizer::cp;
-  return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) {
-    const double x = faure.sample(start + i, j);
-    return rotate ? rotation(x, j) : x;
+  auto scrambled = with_digit_scrambler(request, bases, max_word, [&](const auto& scrambler) {
+    auto shared = std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler);
+    return PointGenerator(
+        d, [shared, faure](std::uint64_t i, unsigned j) { return shared->sample(faure.digit_word(i, j), j); });
   });
+  if (scrambled) return std::move(*scrambled);
+  const bool rotate = request.randomizer == Randomizer::cp;
+  return PointGenerator(
+      d, [faure, rotation = CranleyPattersonRotation(request.seed), rotate](std::uint64_t i, unsigned j) {
+        const double x = faure.sample(i, j);
+        return rotate ? rotation(x, j) : x;
+      });
 }
 
 std::vector<SamplerInfo> sequences() {
@@ -234,7 +260,8 @@ std::vector<SamplerInfo> sequences() {
                                   "", closed(2, digits_detail::max_base), Length{1, Halton::max_dimensions})},
       .validate = validate_halton,
       .count = requested_count,
-      .generate = generate_halton,
+      .generate = generate_halton,  // column fills of the tabulated scramblers
+      .bind = bind_halton,
   });
 
   list.push_back({
@@ -271,7 +298,7 @@ std::vector<SamplerInfo> sequences() {
       .params = {},
       .validate = nullptr,
       .count = requested_count,
-      .generate = generate_faure,
+      .bind = bind_faure,
   });
 
   return list;

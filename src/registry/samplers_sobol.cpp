@@ -405,6 +405,45 @@ PointSet generate_sobol(const SamplerRequest& request) {
   throw invalid_argument("randomize", std::string(randomizer_name(randomizer)), "unknown to the Sobol generator");
 }
 
+/// The Sobol' generator: the words of Sobol::View::bits under the request's
+/// randomizer (each a GF(2) map or hash of the word), masked to `bits`
+/// digits; cp rotates the value and truncates it. The same points as the
+/// block walk of generate_sobol, bit for bit (tests/registry/point_generator_test.cpp).
+PointGenerator bind_sobol(const SamplerRequest& request) {
+  const auto sobol = std::make_shared<const Sobol>(request.d, parse_order(request));
+  const std::uint64_t mask = parse_digit_mask(request);
+  const auto scrambled = [&](auto randomizer) {
+    return PointGenerator(request.d, [sobol, randomizer, mask](std::uint64_t i, unsigned j) {
+      return bits_to_double(randomizer(sobol->view().bits(i, j), j) & mask);
+    });
+  };
+  switch (request.randomizer) {
+    case Randomizer::none:
+      return scrambled([](std::uint64_t word, unsigned) { return word; });
+    case Randomizer::xor_shift:
+      return scrambled(DigitalShift(request.seed));
+    case Randomizer::lms:
+      return scrambled(LinearMatrixScramble(request.seed));
+    case Randomizer::owen:
+      return scrambled(OwenScrambler(request.seed));
+    case Randomizer::owen_hash:
+      return scrambled(HashOwenScrambler(request.seed));
+    case Randomizer::cp: {
+      const std::int64_t bits = request.values.integer("bits");
+      const double truncation = bits < 53 ? std::ldexp(1.0, static_cast<int>(bits)) : 0;
+      return PointGenerator(request.d, [sobol, rotation = CranleyPattersonRotation(request.seed), truncation](
+                                           std::uint64_t i, unsigned j) {
+        const double rotated = rotation(bits_to_double(sobol->view().bits(i, j)), j);
+        return truncation == 0 ? rotated : std::floor(rotated * truncation) / truncation;
+      });
+    }
+    default:
+      break;
+  }
+  throw invalid_argument("randomize", std::string(randomizer_name(request.randomizer)),
+                         "unknown to the Sobol generator");
+}
+
 // Functions, not namespace-scope objects: the registry is built on first use,
 // which may come from another file's static initializer (a benchmark's
 // registration), before this file's own globals are constructed.
@@ -467,7 +506,8 @@ std::vector<SamplerInfo> sobol() {
       .params = {order_param(), bits_param()},
       .validate = nullptr,
       .count = requested_count,
-      .generate = generate_sobol,
+      .generate = generate_sobol,  // the block walk (bulk); bind draws one point at a time
+      .bind = bind_sobol,
   });
 
   list.push_back({
@@ -504,7 +544,8 @@ std::vector<SamplerInfo> sobol() {
       .params = {order_param(), bits_param()},
       .validate = nullptr,
       .count = requested_count,
-      .generate = generate_sobol,
+      .generate = generate_sobol,  // the block walk (bulk); bind draws one point at a time
+      .bind = bind_sobol,
   });
 
   return list;

@@ -3,10 +3,12 @@
 /// point buffers and deterministic parallel filling.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/registry.hpp"
 
 namespace stratum::registry_support {
@@ -33,6 +35,42 @@ PointSet fill_index_addressable(std::uint64_t n, unsigned d, unsigned threads, c
       for (unsigned j = 0; j < d; ++j) out[i * d + j] = sample(i, j);
   });
   return points;
+}
+
+/// A generator for a construction of the rotation or seeded family:
+/// `construction.sample(index, dim)` composed with request.randomizer (cp: a
+/// Cranley–Patterson rotation from the seed; none: as it is).
+template <class Construction>
+PointGenerator rotated_generator(const SamplerRequest& request, Construction construction) {
+  auto shared = std::make_shared<const Construction>(std::move(construction));
+  if (request.randomizer == Randomizer::cp)
+    return PointGenerator(request.d, [shared, rotation = CranleyPattersonRotation(request.seed)](
+                                         std::uint64_t i, unsigned j) { return rotation(shared->sample(i, j), j); });
+  return PointGenerator(request.d, [shared](std::uint64_t i, unsigned j) { return shared->sample(i, j); });
+}
+
+/// SamplerInfo::generate and SamplerInfo::bind of a rotation- or
+/// seeded-family construction that `make(request)` builds: the same
+/// composition twice, the bulk fill with the construction inlined (no call
+/// through the generator per coordinate), the generator for one point at a time.
+template <class Make>
+auto generate_rotated(Make make) {
+  return [make](const SamplerRequest& request) {
+    const auto construction = make(request);
+    const std::uint64_t start = request.start;
+    if (request.randomizer == Randomizer::cp) {
+      const CranleyPattersonRotation rotation(request.seed);
+      return fill_index_addressable(*request.n, request.d, request.threads, [&](std::uint64_t i, unsigned j) {
+        return rotation(construction.sample(start + i, j), j);
+      });
+    }
+    return fill_index_addressable(*request.n, request.d, request.threads,
+                                  [&](std::uint64_t i, unsigned j) { return construction.sample(start + i, j); });
+  };
+}
+template <class Make>
+auto bind_rotated(Make make) {
+  return [make](const SamplerRequest& request) { return rotated_generator(request, make(request)); };
 }
 
 /// SamplerInfo::count for samplers that return exactly the requested n.

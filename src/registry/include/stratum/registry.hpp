@@ -113,6 +113,27 @@ struct SamplerFlags {
   std::vector<std::string> prefix_unbiased{};
 };
 
+/// An index-addressable sampler bound to one request (dimensions, seed,
+/// randomizer, parameters): the core construction composed with its
+/// randomizer, a value that draws coordinate `dim` of point `index` alone.
+/// The renderer draws through it; the registry fills sets from it (unless
+/// an engine, Sobol's block walk, fills faster: then they are tested equal).
+class PointGenerator {
+ public:
+  using Sample = std::function<double(std::uint64_t index, unsigned dim)>;
+  PointGenerator() = default;
+  PointGenerator(unsigned dimensions, Sample sample) : dimensions_(dimensions), sample_(std::move(sample)) {}
+  double sample(std::uint64_t index, unsigned dim) const { return sample_(index, dim); }
+  unsigned dimensions() const noexcept { return dimensions_; }
+  /// out[k·d + j] = sample(first + k, j) for k < count and j < d.
+  void fill(std::uint64_t first, std::uint64_t count, double* out) const;
+  explicit operator bool() const noexcept { return static_cast<bool>(sample_); }
+
+ private:
+  unsigned dimensions_ = 0;
+  Sample sample_;
+};
+
 /// The words SamplerInfo::properties uses for SamplerFlags, in listings.
 inline constexpr const char* frames_continue_property = "start continues the pixel's sequence (frames)";
 
@@ -136,6 +157,10 @@ struct SamplerInfo {
   std::function<std::optional<std::uint64_t>(const SamplerRequest&)> count;
   /// Fills a validated request's points.
   std::function<PointSet(const SamplerRequest&)> generate;
+  /// The request's generator, for every index-addressable sampler (and
+  /// patterns whose points are computed alone once the set is built):
+  /// without `generate`, the registry fills sets from it.
+  std::function<PointGenerator(const SamplerRequest&)> bind{};
   /// The accepted values of --randomize, front() the default: derived from
   /// `randomization` when the registry is built (accepted_randomizers).
   std::vector<std::string> randomizers{};
@@ -162,6 +187,10 @@ std::string validate_request(const SamplerInfo& sampler, const SamplerRequest& r
 
 /// Validates, then generates. The one entry point the faces call.
 PointSet generate_points(std::string_view name, const SamplerRequest& request);
+
+/// Validates, then binds the sampler's generator (the sampler must have
+/// one: SamplerInfo::bind; else invalid_argument naming "sampler").
+PointGenerator bind_generator(std::string_view name, const SamplerRequest& request);
 
 /// Largest number of coordinates (n × d) stratum will allocate now: the
 /// memory guard's memory_available() (stratum/memory.hpp), in doubles.
