@@ -81,6 +81,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   has_spacetime_ = !spacetime_.empty();
   if (fast_ == Fast::sobol_owen_hash) sobol_ = &sobol_2d();
   halton_direct_ = halton_permute_ && offset_ + settings_.spp <= halton_direct_max;
+  bound_ = static_cast<bool>(info.bind) && fast_ == Fast::none && !halton_permute_;
   if (halton_permute_)
     for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
@@ -93,7 +94,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
   fast_ = other.fast_, sobol_ = other.sobol_, halton_permute_ = other.halton_permute_;
-  arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
+  arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_, bound_ = other.bound_;
   halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
   halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
@@ -212,6 +213,7 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     array_mix_ = hash64_extend(pixel_mix_, tag_array);
     dimension_valid_ = array_valid_ = 0;
     for (auto& set : sets_) set.n = 0;  // stale: redrawn on first use
+    for (auto& generator : generators_) generator = {};
     for (auto& set : halton_sets_) set.coordinates = 0;
     if (!spacetime_.empty()) {
       // A frame's own time pattern also where the pixel key is every frame's (progressive samplers).
@@ -230,6 +232,23 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   PointSet& set = sets_[dimension];
   if (set.n == 0) set = draw(settings_.sampler, settings_.spp, 2, hash64(pixel_key_, dimension), offset_);
   return set;
+}
+
+PointGenerator PixelSampler::bind_set(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const {
+  SamplerRequest request;
+  request.n = n;
+  request.d = sampler_dims_;
+  request.seed = seed;
+  request.start = start;
+  request.randomize = settings_.randomize;
+  return bind_generator(settings_.sampler, request);
+}
+
+const PointGenerator& PixelSampler::generator_for(std::uint32_t dimension) {
+  if (generators_.size() <= dimension) generators_.resize(dimension + 1);
+  PointGenerator& generator = generators_[dimension];
+  if (!generator) generator = bind_set(hash64(pixel_key_, dimension), settings_.spp, offset_);
+  return generator;
 }
 
 std::uint64_t PixelSampler::zsobol_index_miss(std::uint32_t dimension) {
@@ -282,6 +301,10 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
       build_halton_set(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
     return halton_point(set, sequence_index_);
   }
+  if (bound_) {
+    const PointGenerator& generator = generator_for(dimension_++);
+    return {generator.sample(sequence_index_, 0), coordinates > 1 ? generator.sample(sequence_index_, 1) : 0.0};
+  }
   const PointSet& set = set_for(dimension_++);
   return {set(index_, 0), set(index_, 1)};
 }
@@ -316,6 +339,11 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     HaltonSet set;
     build_halton_set(seed, start + n, set);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(set, start + i);
+    return;
+  }
+  if (bound_) {
+    const PointGenerator generator = bind_set(seed, n, start);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;
   }
   const PointSet set = draw(settings_.sampler, n, 2, seed, start);  // points start … start + n − 1
