@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -26,6 +28,24 @@ std::uint64_t mem_available() {
   return 0;
 }
 
+/// mem_available() read at most once per 50 ms: the guard runs on every
+/// request, and the renderer makes one per pixel, dimension and shading
+/// point, where reading /proc/meminfo each time (open, read, parse, close:
+/// microseconds) cost more than the points themselves.
+std::uint64_t mem_available_recent() {
+  using Clock = std::chrono::steady_clock;
+  static std::atomic<std::uint64_t> value{0};
+  static std::atomic<Clock::rep> read_at{0};
+  const Clock::rep now = Clock::now().time_since_epoch().count();
+  const Clock::rep last = read_at.load(std::memory_order_acquire);
+  if (last != 0 && now - last < std::chrono::duration_cast<Clock::duration>(std::chrono::milliseconds(50)).count())
+    return value.load(std::memory_order_relaxed);
+  const std::uint64_t available = mem_available();
+  value.store(available, std::memory_order_relaxed);
+  read_at.store(now, std::memory_order_release);
+  return available;
+}
+
 std::uint64_t half_physical_memory() {
   const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
   if (pages <= 0 || page_size <= 0) return std::uint64_t{1} << 33;
@@ -35,7 +55,7 @@ std::uint64_t half_physical_memory() {
 }  // namespace
 
 std::uint64_t memory_available() {
-  std::uint64_t available = mem_available();
+  std::uint64_t available = mem_available_recent();
   if (available == 0) available = half_physical_memory();
   if (const char* text = std::getenv("STRATUM_MEMORY_LIMIT"); text && *text) {
     std::uint64_t limit = 0;

@@ -30,7 +30,8 @@ double param_gamma(const SamplerRequest& request) { return request.values.real("
 /// the header's constructor except for the count and the syntax.
 Kronecker kronecker_from(const SamplerRequest& request) {
   const double offset = request.values.real("offset");
-  if (!request.values.has("alpha")) return Kronecker(request.d, offset);
+  if (!request.values.has("alpha"))  // R_d's vector: a root found once per (d, offset)
+    return *shared_construction<Kronecker>(std::pair{request.d, offset}, [&] { return Kronecker(request.d, offset); });
   const std::vector<double>& alpha = request.values.reals("alpha");
   require(alpha.size() == request.d, "alpha", *param_text(request, "alpha"),
           "has " + std::to_string(alpha.size()) + " entries; d = " + std::to_string(request.d) + " needs " +

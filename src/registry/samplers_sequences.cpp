@@ -219,22 +219,25 @@ static PointSet generate_hammersley(const SamplerRequest& request) {
 /// of each index (the registry fills sets from it).
 static PointGenerator bind_faure(const SamplerRequest& request) {
   const unsigned d = request.d;
-  const Faure faure(d);
+  const auto shared = shared_construction<Faure>(d, [d] { return Faure(d); });
+  const Faure& faure = *shared;
   const std::vector<std::uint32_t> bases(d, faure.base());
   // Digit words of indices < b^k are < b^k: the tables' range.
   unsigned __int128 bound = 1;
   for (std::uint64_t last = request.start + *request.n - 1; last != 0; last /= faure.base()) bound *= faure.base();
   const std::uint64_t max_word = bound > ~std::uint64_t{0} ? ~std::uint64_t{0} : static_cast<std::uint64_t>(bound - 1);
+  // The lambdas hold the shared construction, never a copy of its matrices.
   auto scrambled = with_digit_scrambler(request, bases, max_word, [&](const auto& scrambler) {
-    auto shared = std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler);
-    return PointGenerator(
-        d, [shared, faure](std::uint64_t i, unsigned j) { return shared->sample(faure.digit_word(i, j), j); });
+    auto scrambling = std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler);
+    return PointGenerator(d, [scrambling, shared](std::uint64_t i, unsigned j) {
+      return scrambling->sample(shared->digit_word(i, j), j);
+    });
   });
   if (scrambled) return std::move(*scrambled);
   const bool rotate = request.randomizer == Randomizer::cp;
   return PointGenerator(
-      d, [faure, rotation = CranleyPattersonRotation(request.seed), rotate](std::uint64_t i, unsigned j) {
-        const double x = faure.sample(i, j);
+      d, [shared, rotation = CranleyPattersonRotation(request.seed), rotate](std::uint64_t i, unsigned j) {
+        const double x = shared->sample(i, j);
         return rotate ? rotation(x, j) : x;
       });
 }

@@ -410,7 +410,9 @@ PointSet generate_sobol(const SamplerRequest& request) {
 /// digits; cp rotates the value and truncates it. The same points as the
 /// block walk of generate_sobol, bit for bit (tests/registry/point_generator_test.cpp).
 PointGenerator bind_sobol(const SamplerRequest& request) {
-  const auto sobol = std::make_shared<const Sobol>(request.d, parse_order(request));
+  const Sobol::Order order = parse_order(request);
+  const auto sobol = shared_construction<Sobol>(std::pair{request.d, order == Sobol::Order::gray},
+                                                [&] { return Sobol(request.d, order); });
   const std::uint64_t mask = parse_digit_mask(request);
   const auto scrambled = [&](auto randomizer) {
     return PointGenerator(request.d, [sobol, randomizer, mask](std::uint64_t i, unsigned j) {

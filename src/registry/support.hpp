@@ -3,7 +3,9 @@
 /// point buffers and deterministic parallel filling.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +37,20 @@ PointSet fill_index_addressable(std::uint64_t n, unsigned d, unsigned threads, c
       for (unsigned j = 0; j < d; ++j) out[i * d + j] = sample(i, j);
   });
   return points;
+}
+
+/// One construction per key, built on first use and shared: for the
+/// constructions that depend on their dimensions only (Faure's matrices,
+/// Sobol's tables, Kronecker's default vector), which a renderer binding a
+/// generator per pixel and dimension would otherwise rebuild each time.
+template <class T, class Key, class Make>
+std::shared_ptr<const T> shared_construction(const Key& key, const Make& make) {
+  static std::mutex mutex;
+  static std::map<Key, std::shared_ptr<const T>> built;
+  const std::lock_guard lock(mutex);
+  auto& entry = built[key];
+  if (!entry) entry = std::make_shared<const T>(make());
+  return entry;
 }
 
 /// A generator for a construction of the rotation or seeded family:
