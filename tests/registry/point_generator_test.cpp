@@ -33,8 +33,11 @@ std::uint64_t count_for(const SamplerInfo& s, unsigned d, const std::string& ran
 }
 
 TEST(PointGenerator, EveryIndexAddressableSamplerHasOne) {
-  for (const SamplerInfo& s : samplers())
-    if (s.flags.index_addressable) EXPECT_TRUE(static_cast<bool>(s.bind)) << s.name;
+  for (const SamplerInfo& s : samplers()) {
+    if (s.flags.index_addressable) {
+      EXPECT_TRUE(static_cast<bool>(s.bind)) << s.name;
+    }
+  }
 }
 
 TEST(PointGenerator, DrawsTheRegistrysPointsBitForBit) {

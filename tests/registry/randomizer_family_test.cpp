@@ -59,10 +59,13 @@ TEST(Randomizers, FamiliesMatchTheConstructions) {
   for (const SamplerInfo& s : samplers()) {
     const RandomizerFamily family = s.randomization.family;
     // A seeded construction draws from the seed itself.
-    if (family == RandomizerFamily::seeded || family == RandomizerFamily::seeded_owen_hash)
+    if (family == RandomizerFamily::seeded || family == RandomizerFamily::seeded_owen_hash) {
       EXPECT_TRUE(s.flags.self_randomized) << s.name;
+    }
     // A (0,2)-net in base 2 is a base-2 digital construction or a seeded one (pmj02).
-    if (s.flags.zero_two_net) EXPECT_NE(family, RandomizerFamily::rotation) << s.name;
+    if (s.flags.zero_two_net) {
+      EXPECT_NE(family, RandomizerFamily::rotation) << s.name;
+    }
   }
 }
 

@@ -51,8 +51,9 @@ bool accepts(const SamplerInfo& s, const std::string& randomize) {
 TEST(SamplerFlags, AgreeWithTheRandomizersEachSamplerAccepts) {
   for (const SamplerInfo& s : samplers()) {
     ASSERT_FALSE(s.randomizers.empty()) << s.name;
-    if (!s.flags.self_randomized)
+    if (!s.flags.self_randomized) {
       EXPECT_TRUE(accepts(s, "none")) << s.name << " is a deterministic construction: it must accept none";
+    }
     for (const std::string& r : s.flags.prefix_unbiased) EXPECT_TRUE(accepts(s, r)) << s.name << " " << r;
     if (s.flags.frames_continue) EXPECT_FALSE(s.flags.progressive) << s.name << ": a pixel sampler's start is a frame";
     if (s.flags.space_time) {
