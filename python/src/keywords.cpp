@@ -14,6 +14,23 @@ std::string shown(const py::handle& value) {
 bool is_bool(const py::handle& value) {
   return PyBool_Check(value.ptr()) || std::string(py::str(py::type::handle_of(value).attr("__name__"))) == "bool_";
 }
+/// `value` as a Python int when it is an integer (Python's or numpy's:
+/// operator.index; never a bool), else nullopt.
+std::optional<py::object> as_int(const py::handle& value) {
+  if (is_bool(value) || !PyIndex_Check(value.ptr())) return std::nullopt;
+  py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!index) throw py::error_already_set();
+  return index;
+}
+/// The same when it also fits 64 signed bits.
+std::optional<std::int64_t> as_int64(const py::handle& value) {
+  const auto index = as_int(value);
+  if (!index) return std::nullopt;
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(index->ptr(), &overflow);
+  if (overflow != 0) return std::nullopt;
+  return n;
+}
 /// The library's refusal `e` of `library_value` (how the value reached it)
 /// told of `value` as the caller gave it, under this binding's `name`.
 invalid_argument as_given(const invalid_argument& e, const char* name, const py::handle& value,
@@ -32,14 +49,11 @@ std::optional<py::object> Keywords::take(const char* name) {
 }
 
 std::int64_t Keywords::integer_in(const char* name, const py::object& value, std::int64_t low, std::int64_t high) {
-  const std::string allowed = "must be an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]";
-  if (is_bool(value) || !PyIndex_Check(value.ptr())) throw invalid_argument(name, shown(value), allowed);
-  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
-  if (!index) throw py::error_already_set();
-  int overflow = 0;
-  const long long n = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
-  if (overflow != 0 || n < low || n > high) throw invalid_argument(name, shown(value), allowed);
-  return n;
+  const auto n = as_int64(value);
+  if (!n || *n < low || *n > high)
+    throw invalid_argument(name, shown(value),
+                           "must be an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+  return *n;
 }
 
 void Keywords::real(const char* name, double& out) {
@@ -102,10 +116,10 @@ void Keywords::seed(const char* name, std::uint64_t& out) {
   const auto value = take(name);
   if (!value) return;
   // Any integer's digits go to the library's rule (parse_seed), which refuses
-  // negative and too large ones; what is not an integer reads as its repr.
-  const bool integral = !is_bool(*value) && PyIndex_Check(value->ptr());
-  const std::string text =
-      integral ? std::string(py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value->ptr())))) : "not-a-number";
+  // negative and too large ones; what is not an integer reaches it as text it
+  // refuses (the message shows the repr).
+  const auto index = as_int(*value);
+  const std::string text = index ? std::string(py::str(*index)) : "not-a-number";
   try {
     out = parse_seed(text);
   } catch (const invalid_argument& e) {
@@ -117,13 +131,7 @@ void Keywords::threads(const char* name, unsigned& out) {
   const auto value = take(name);
   if (!value) return;
   // Integers beyond 64 bits reach the rule as -1: refused by it alike.
-  std::int64_t n = -1;
-  if (!is_bool(*value) && PyIndex_Check(value->ptr())) {
-    int overflow = 0;
-    const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value->ptr()));
-    const long long given = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
-    if (overflow == 0) n = given;
-  }
+  const std::int64_t n = as_int64(*value).value_or(-1);
   try {
     out = resolve_threads(n);
   } catch (const invalid_argument& e) {

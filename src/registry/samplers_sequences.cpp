@@ -120,6 +120,25 @@ static void validate_halton(const SamplerRequest& request) {
                            "give one base per dimension: d = " + std::to_string(request.d));
 }
 
+/// Radical inverses in any bases, one per dimension: Halton's construction
+/// for the `bases` parameter.
+struct RadicalInverses {
+  std::vector<std::uint32_t> bases;
+  std::vector<std::uint64_t> reciprocals;
+  explicit RadicalInverses(std::vector<std::uint32_t> given) : bases(std::move(given)), reciprocals(bases.size()) {
+    for (std::size_t j = 0; j < bases.size(); ++j) reciprocals[j] = radical_inverse_reciprocal(bases[j]);
+  }
+  double sample(std::uint64_t index, unsigned dim) const {
+    return radical_inverse(bases[dim], index, reciprocals[dim]);
+  }
+};
+
+/// Halton's unscrambled constructions, for generate_rotated and bind_rotated (none, cp).
+static RadicalInverses radical_inverses_of(const SamplerRequest& request) {
+  return RadicalInverses(halton_bases(request));
+}
+static Halton halton_of(const SamplerRequest& request) { return Halton(request.d); }
+
 /// Halton points with the request's randomizer, indices start .. start+n−1.
 static PointSet generate_halton(const SamplerRequest& request) {
   const std::uint64_t n = *request.n, start = request.start;
@@ -131,22 +150,8 @@ static PointSet generate_halton(const SamplerRequest& request) {
     });
   });
   if (scrambled) return std::move(*scrambled);
-  const Randomizer randomizer = request.randomizer;
-  const CranleyPattersonRotation rotation(request.seed);
-  const bool rotate = randomizer == Randomizer::cp;
-  if (request.values.has("bases")) {  // radical inverses in the given bases
-    std::vector<std::uint64_t> reciprocals(d);
-    for (unsigned j = 0; j < d; ++j) reciprocals[j] = radical_inverse_reciprocal(bases[j]);
-    return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) {
-      const double x = radical_inverse(bases[j], start + i, reciprocals[j]);
-      return rotate ? rotation(x, j) : x;
-    });
-  }
-  const Halton halton(d);
-  if (rotate)
-    return fill_each(n, d, request.threads,
-                     [&](std::uint64_t i, unsigned j) { return rotation(halton.sample(start + i, j), j); });
-  return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return halton.sample(start + i, j); });
+  if (request.values.has("bases")) return generate_rotated(radical_inverses_of)(request);
+  return generate_rotated(halton_of)(request);
 }
 
 /// Halton's generator: the same points as generate_halton, one at a time.
@@ -154,24 +159,11 @@ static PointGenerator bind_halton(const SamplerRequest& request) {
   const std::vector<std::uint32_t> bases = halton_bases(request);
   const std::uint64_t max_index = request.start + *request.n - 1;
   auto scrambled = with_digit_scrambler(request, bases, max_index, [&](const auto& scrambler) {
-    auto shared = std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler);
-    return PointGenerator(request.d, [shared](std::uint64_t i, unsigned j) { return shared->sample(i, j); });
+    return plain_generator(request.d, std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler));
   });
   if (scrambled) return std::move(*scrambled);
-  const CranleyPattersonRotation rotation(request.seed);
-  const bool rotate = request.randomizer == Randomizer::cp;
-  if (request.values.has("bases")) {  // radical inverses in the given bases
-    std::vector<std::uint64_t> reciprocals(request.d);
-    for (unsigned j = 0; j < request.d; ++j) reciprocals[j] = radical_inverse_reciprocal(bases[j]);
-    return PointGenerator(request.d, [bases, reciprocals, rotation, rotate](std::uint64_t i, unsigned j) {
-      const double x = radical_inverse(bases[j], i, reciprocals[j]);
-      return rotate ? rotation(x, j) : x;
-    });
-  }
-  return PointGenerator(request.d, [halton = Halton(request.d), rotation, rotate](std::uint64_t i, unsigned j) {
-    const double x = halton.sample(i, j);
-    return rotate ? rotation(x, j) : x;
-  });
+  if (request.values.has("bases")) return bind_rotated(radical_inverses_of)(request);
+  return bind_rotated(halton_of)(request);
 }
 
 /// i/N as a 64-bit binary fraction, floor(i · 2^64 / N): exact at N = 2^k.
@@ -234,12 +226,7 @@ static PointGenerator bind_faure(const SamplerRequest& request) {
     });
   });
   if (scrambled) return std::move(*scrambled);
-  const bool rotate = request.randomizer == Randomizer::cp;
-  return PointGenerator(
-      d, [shared, rotation = CranleyPattersonRotation(request.seed), rotate](std::uint64_t i, unsigned j) {
-        const double x = shared->sample(i, j);
-        return rotate ? rotation(x, j) : x;
-      });
+  return rotated_generator(request, shared);
 }
 
 std::vector<SamplerInfo> sequences() {
@@ -301,6 +288,7 @@ std::vector<SamplerInfo> sequences() {
       .params = {},
       .validate = nullptr,
       .count = requested_count,
+      .generate = nullptr,  // the registry fills sets from bind
       .bind = bind_faure,
   });
 

@@ -53,16 +53,25 @@ std::shared_ptr<const T> shared_construction(const Key& key, const Make& make) {
   return entry;
 }
 
+/// The generator of a shared construction (sample(index, dim)) as it is.
+template <class Construction>
+PointGenerator plain_generator(unsigned dimensions, std::shared_ptr<const Construction> shared) {
+  return PointGenerator(dimensions, [shared](std::uint64_t i, unsigned j) { return shared->sample(i, j); });
+}
+
 /// A generator for a construction of the rotation or seeded family:
 /// `construction.sample(index, dim)` composed with request.randomizer (cp: a
 /// Cranley–Patterson rotation from the seed; none: as it is).
 template <class Construction>
-PointGenerator rotated_generator(const SamplerRequest& request, Construction construction) {
-  auto shared = std::make_shared<const Construction>(std::move(construction));
+PointGenerator rotated_generator(const SamplerRequest& request, std::shared_ptr<const Construction> shared) {
   if (request.randomizer == Randomizer::cp)
     return PointGenerator(request.d, [shared, rotation = CranleyPattersonRotation(request.seed)](
                                          std::uint64_t i, unsigned j) { return rotation(shared->sample(i, j), j); });
-  return PointGenerator(request.d, [shared](std::uint64_t i, unsigned j) { return shared->sample(i, j); });
+  return plain_generator(request.d, std::move(shared));
+}
+template <class Construction>
+PointGenerator rotated_generator(const SamplerRequest& request, Construction construction) {
+  return rotated_generator(request, std::make_shared<const Construction>(std::move(construction)));
 }
 
 /// SamplerInfo::generate and SamplerInfo::bind of a rotation- or

@@ -72,7 +72,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   offset_ = continues ? std::uint64_t{settings_.frame} * settings_.spp : 0;
   arrays_continue_ = info.flags.progressive;
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
-  const Randomizer randomizer = parse_randomizer(r.empty() ? info.randomizers.front() : r);
+  const Randomizer randomizer = r.empty() ? info.randomization.default_randomizer : parse_randomizer(r);
   if (name == "random" && randomizer == Randomizer::none) fast_ = Fast::random;
   if (name == "sobol" && randomizer == Randomizer::owen_hash) fast_ = Fast::sobol_owen_hash;
   if (name == "jittered" && randomizer == Randomizer::none) fast_ = Fast::jittered;
@@ -194,12 +194,16 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
       return set_of([&](std::uint64_t i) { return std::array{permutations.sample(i, 0), permutations.sample(i, 1)}; });
     }
   }
+  if (sampler == settings_.sampler) {
+    SamplerRequest request = set_request(seed, n, start);
+    request.d = std::max(d, sampler_dims_);
+    return generate_points(sampler, request);
+  }
   SamplerRequest request;
   request.n = n;
-  request.d = sampler == settings_.sampler ? std::max(d, sampler_dims_) : d;
+  request.d = d;
   request.seed = seed;
   request.start = start;
-  request.randomize = sampler == settings_.sampler ? settings_.randomize : "";
   return generate_points(sampler, request);
 }
 
@@ -234,14 +238,18 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   return set;
 }
 
-PointGenerator PixelSampler::bind_set(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const {
+SamplerRequest PixelSampler::set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const {
   SamplerRequest request;
   request.n = n;
   request.d = sampler_dims_;
   request.seed = seed;
   request.start = start;
   request.randomize = settings_.randomize;
-  return bind_generator(settings_.sampler, request);
+  return request;
+}
+
+PointGenerator PixelSampler::bind_set(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const {
+  return bind_generator(settings_.sampler, set_request(seed, n, start));
 }
 
 const PointGenerator& PixelSampler::generator_for(std::uint32_t dimension) {

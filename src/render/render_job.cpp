@@ -12,6 +12,11 @@ namespace {
 constexpr std::int64_t max_spp = std::int64_t{1} << 24;
 constexpr std::int64_t max_side = 16384;
 
+/// --reference-spp, read alike by render and compare.
+void check_reference_spp(std::int64_t spp) {
+  require(spp >= 1 && spp <= max_spp, "reference-spp", spp, "must be in [1, 2^24]");
+}
+
 /// A real as its shortest round-trip decimal (0.9, not 0.90000000000000002).
 std::string shortest(double value) {
   char text[32];
@@ -38,8 +43,7 @@ void prepare_render_job(RenderJob& job) {
   require(job.variance.empty() || job.reference || job.spp >= 2, job.variance_argument, job.variance,
           "needs spp 2 or more: a pixel's variance is estimated from its samples (this render takes " +
               std::to_string(job.spp) + ")");
-  require(job.reference_spp >= 1 && job.reference_spp <= max_spp, "reference-spp", job.reference_spp,
-          "must be in [1, 2^24]");
+  check_reference_spp(job.reference_spp);
 }
 
 Scene job_scene(const RenderJob& job, std::vector<std::string>* warnings) {
@@ -71,8 +75,7 @@ RenderJobResult run_render_job(const RenderJob& job, const Scene& scene,
 CompareJobResult run_compare_job(const CompareJob& job) {
   require(job.builtin.empty() || !job.configs, "configs", job.configs_origin,
           "give a built-in comparison or configurations, not both (builtin " + job.builtin + ")");
-  require(job.reference_spp >= 1 && job.reference_spp <= max_spp, "reference-spp", job.reference_spp,
-          "must be in [1, 2^24]");
+  check_reference_spp(job.reference_spp);
   require(job.width >= 1 && job.width <= max_side, "width", job.width, "must be in [1, 16384]");
   require(job.height >= 1 && job.height <= max_side, "height", job.height, "must be in [1, 16384]");
   require(job.repeats >= 1 && job.repeats <= 1000, "repeats", job.repeats, "must be in [1, 1000]");

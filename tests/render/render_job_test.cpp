@@ -8,13 +8,19 @@
 namespace stratum::render {
 namespace {
 
-std::string refusal(RenderJob job) {
+/// What `check(job)` refuses the job with ("" when it accepts it).
+template <class Job, class Check>
+std::string refusal_of(Job job, const Check& check) {
   try {
-    prepare_render_job(job);
+    check(job);
   } catch (const invalid_argument& e) {
     return e.what();
   }
   return "";
+}
+
+std::string refusal(const RenderJob& job) {
+  return refusal_of(job, [](RenderJob& j) { prepare_render_job(j); });
 }
 
 TEST(RenderJob, RefusesEachBadFieldNamingItsValue) {
@@ -68,12 +74,7 @@ namespace stratum::render {
 namespace {
 
 std::string compare_refusal(const CompareJob& job) {
-  try {
-    run_compare_job(job);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return refusal_of(job, [](const CompareJob& j) { run_compare_job(j); });
 }
 
 TEST(CompareJob, RefusesEachBadFieldBeforeRendering) {

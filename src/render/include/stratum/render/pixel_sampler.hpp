@@ -170,7 +170,9 @@ class PixelSampler {
   bool bound_ = false;
   std::vector<PointGenerator> generators_;  ///< this pixel's, by dimension (empty: not bound yet)
   const PointGenerator& generator_for(std::uint32_t dimension);
-  /// The generator of `n` points from `start` of the pixel sampler's set with `seed`.
+  /// The request for `n` points from `start` of the pixel sampler's set with
+  /// `seed` (its randomizer, its dimensions), and that set's generator.
+  SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
   PointGenerator bind_set(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
