@@ -20,12 +20,19 @@ struct ReportCliOptions {
   std::string only;
   std::int64_t threads = 0;
   bool list = false;
+  bool slides = false;
 };
 
 void run_report(ReportCliOptions& options) {
   if (options.list) {
     for (const auto& section : report::report_sections())
       fmt::print("{:<16} {:<4} {}\n", section.id, section.lecture, section.title);
+    return;
+  }
+  if (options.slides) {
+    for (const auto& slide : report::lecture_slides())
+      fmt::print("{:<4} {:<16} {}{}\n", slide.lecture, slide.section, slide.title,
+                 slide.formula.empty() ? "" : "  [" + slide.formula + "]");
     return;
   }
   // Its sections write figures as they go, from every process: one process only (docs/distributed.md).
@@ -67,6 +74,8 @@ void add_report_command(CLI::App& app) {
   command->add_option("--cache", options->report.cache_dir, "Folder of cached reference renders")
       ->capture_default_str();
   command->add_flag("--list", options->list, "List the sections and exit");
+  command->add_flag("--slides", options->slides,
+                    "List the lecture's slides (section, title, formula) and the section reproducing each, and exit");
   command->callback([options] { run_report(*options); });
 }
 

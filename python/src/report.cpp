@@ -18,6 +18,13 @@ void bind_report(py::module_& m) {
       sections.append(py::dict(py::arg("id") = s.id, py::arg("lecture") = s.lecture, py::arg("title") = s.title));
     return sections;
   });
+  m.def("lecture_slides", [] {
+    py::list slides;
+    for (const auto& s : report::lecture_slides())
+      slides.append(py::dict(py::arg("lecture") = s.lecture, py::arg("title") = s.title, py::arg("formula") = s.formula,
+                             py::arg("section") = s.section, py::arg("anchor") = s.anchor));
+    return slides;
+  });
   m.def(
       "report",
       [](const std::string& directory, bool quick, const std::vector<std::string>& samplers,

@@ -3,12 +3,20 @@ from __future__ import annotations
 
 from . import _checks, _stratum
 
-__all__ = ["report", "report_sections"] if hasattr(_stratum, "report") else []
+__all__ = ["report", "report_sections", "lecture_slides"] if hasattr(_stratum, "report") else []
 
 
 def report_sections() -> list[dict]:
     """Every section of the report: id, lecture (the LECTURE.md section) and title."""
     return _stratum.report_sections()
+
+
+def lecture_slides() -> list[dict]:
+    """The lecture slide by slide: lecture (the LECTURE.md section), title,
+    formula ("" where the slide states none), and the report section and
+    anchor on the page ("figure-…", "table-…", or "" for the whole section)
+    that reproduce it."""
+    return _stratum.lecture_slides()
 
 
 def report(directory: str = "report", quick: bool = False, samplers=(), only=(), threads: int = 1, seed: int = 0,

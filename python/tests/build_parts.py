@@ -33,4 +33,4 @@ RENDERER = _render_option if _render_option is not None else hasattr(stratum._st
 NO_RENDERER = ("built without the renderer (STRATUM_BUILD_RENDER=OFF in " + CACHE + ")" if _render_option is not None
                else "an installed package without the renderer (its extension has no render)")
 # The Python faces of the renderer and the report (python/stratum/render.py, report.py).
-RENDERER_NAMES = ("render", "compare", "comparisons", "report", "report_sections")
+RENDERER_NAMES = ("render", "compare", "comparisons", "report", "report_sections", "lecture_slides")

@@ -1,10 +1,12 @@
 """stratum.report: the lecture page from Python (same sections as `stratum report`)."""
 import json
+import pathlib
 
 import pytest
 
 import stratum
 
+import build_parts
 from build_parts import NO_RENDERER, RENDERER
 
 pytestmark = pytest.mark.skipif(not RENDERER, reason=NO_RENDERER)
@@ -16,6 +18,27 @@ def test_sections_listed_in_lecture_order():
     numbers = [int(s["lecture"].lstrip("§")) for s in sections]
     assert numbers == sorted(numbers)
     assert len({s["id"] for s in sections}) == len(sections)
+
+
+def test_lecture_slides_name_report_sections_and_the_cli_lists_the_same(tmp_path):
+    import subprocess
+    slides = stratum.lecture_slides()
+    lectures = {s["id"]: s["lecture"] for s in stratum.report_sections()}
+    assert len(slides) >= 26
+    for slide in slides:
+        assert lectures[slide["section"]] == slide["lecture"], slide
+        assert slide["anchor"] == "" or slide["anchor"].startswith(("figure-" + slide["section"] + "-", "table-"))
+    # Every section shows at least one formula of the lecture.
+    assert {s["section"] for s in slides if s["formula"]} == set(lectures)
+    # The CLI of the same build: <build>/python/stratum/ beside <build>/bin/stratum.
+    cli = pathlib.Path(stratum.__file__).parents[2] / "bin" / "stratum"
+    assert cli.is_file() or not build_parts.cache_option("STRATUM_BUILD_APPS"), f"{cli} is missing"
+    if cli.is_file():
+        lines = subprocess.run([str(cli), "report", "--slides"], check=True, capture_output=True,
+                               text=True).stdout.splitlines()
+        assert len(lines) == len(slides)
+        for line, slide in zip(lines, slides):
+            assert line.split()[:2] == [slide["lecture"], slide["section"]] and slide["title"] in line, line
 
 
 def test_one_section_writes_page_figures_and_numbers(tmp_path):

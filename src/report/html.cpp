@@ -59,6 +59,10 @@ td.num { white-space: nowrap; }
 caption { caption-side: top; text-align: left; font-weight: bold; padding-bottom: 0.3em; }
 code { background: var(--code); padding: 0 0.25em; border-radius: 3px; font-size: 0.85em; overflow-wrap: anywhere; }
 .try { border-left: 3px solid var(--line); padding-left: 0.6em; }
+.formula { font-family: "DejaVu Serif", serif; }
+dl.formulas { border-left: 3px solid var(--link); padding: 0.2em 0.8em; margin: 1em 0; background: var(--head); }
+dl.formulas dt { color: var(--muted); font-size: 0.9em; } dl.formulas dd { margin: 0 0 0.4em 1em; overflow-wrap: anywhere; }
+tr.topic th { text-align: left; } table.slides td, table.slides th { text-align: left; }
 )css";
 
 /// Escapes `text` and shows the parts between backticks as <code>.
@@ -84,6 +88,38 @@ std::string markup(const std::string& text) {
   return html;
 }
 
+/// A formula as HTML: "x^(−1/2)" and "x^2" as superscripts, "U_i" and
+/// "∫_(H²)" as subscripts (a group in parentheses, or a run of characters up
+/// to a space or punctuation); the rest escaped.
+std::string formula_html(const std::string& formula) {
+  std::string html;
+  for (std::size_t i = 0; i < formula.size(); ++i) {
+    const char c = formula[i];
+    if ((c != '^' && c != '_') || i + 1 == formula.size()) {
+      html += escape(std::string(1, c));
+      continue;
+    }
+    std::size_t begin = i + 1, end = begin;
+    if (formula[begin] == '(') {
+      int depth = 0;
+      for (; end < formula.size(); ++end) {
+        depth += formula[end] == '(' ? 1 : formula[end] == ')' ? -1 : 0;
+        if (depth == 0) break;
+      }
+      ++begin;  // inside the parentheses
+    } else {
+      while (end < formula.size() && std::string_view(" ,;()[]/=|").find(formula[end]) == std::string_view::npos) ++end;
+    }
+    const std::string tag = c == '^' ? "sup" : "sub";
+    html += "<" + tag + ">" + escape(formula.substr(begin, end - begin)) + "</" + tag + ">";
+    i = formula[i + 1] == '(' ? end : end - 1;
+  }
+  return html;
+}
+
+/// A section's title up to its colon ("Importance sampling"), for links.
+std::string short_title(const std::string& title) { return title.substr(0, title.find(':')); }
+
 /// A cell that holds a measured number (it must not wrap: "5.35e-05").
 bool numeric_cell(const std::string& cell) {
   if (cell.empty()) return false;
@@ -93,7 +129,8 @@ bool numeric_cell(const std::string& cell) {
 }
 
 std::string table_html(const Table& table) {
-  std::string html = "<div class=\"scroll\"><table>\n";
+  std::string html = table.id.empty() ? "<div class=\"scroll\"><table>\n"
+                                      : "<div class=\"scroll\" id=\"table-" + escape(table.id) + "\"><table>\n";
   if (!table.caption.empty()) html += "<caption>" + markup(table.caption) + "</caption>\n";
   html += "<tr>";
   for (const auto& cell : table.header) html += "<th>" + markup(cell) + "</th>";
@@ -106,17 +143,28 @@ std::string table_html(const Table& table) {
   return html + "</table></div>\n";
 }
 
+/// The formulas of the section's slides, under its heading.
+std::string formulas_html(const Section& section) {
+  std::string items;
+  for (const LectureSlide& slide : lecture_slides())
+    if (slide.section == section.id && !slide.formula.empty())
+      items +=
+          fmt::format("<dt>{}</dt><dd class=\"formula\">{}</dd>\n", escape(slide.title), formula_html(slide.formula));
+  return items.empty() ? "" : "<dl class=\"formulas\">\n" + items + "</dl>\n";
+}
+
 std::string section_html(const Section& section) {
   std::string html = fmt::format("<section id=\"{}\">\n<h2>{} {}</h2>\n", escape(section.id), escape(section.lecture),
                                  escape(section.title));
+  html += formulas_html(section);
   for (const auto& paragraph : section.text) html += "<p>" + markup(paragraph) + "</p>\n";
   if (!section.figures.empty()) {
     html += "<div class=\"figures\">\n";
     for (const auto& figure : section.figures)
       html += fmt::format(
-          "<figure><a href=\"{0}\" title=\"full-size image\"><img src=\"{0}\" alt=\"{1}\"></a>"
+          "<figure id=\"{3}\"><a href=\"{0}\" title=\"full-size image\"><img src=\"{0}\" alt=\"{1}\"></a>"
           "<figcaption>{2}</figcaption></figure>\n",
-          escape(figure.file), escape(figure.caption), markup(figure.caption));
+          escape(figure.file), escape(figure.caption), markup(figure.caption), escape(figure_anchor(figure)));
     html += "</div>\n";
   }
   for (const auto& table : section.tables) html += table_html(table);
@@ -135,20 +183,29 @@ std::string section_html(const Section& section) {
   return html;
 }
 
-/// The lecture's topics, each with the sections that reproduce it.
+/// The lecture slide by slide: each slide's title and formula, and a link to
+/// the figure or table that reproduces it.
 std::string index_html(const std::vector<Section>& sections) {
   std::string html =
-      "<nav><div class=\"scroll\"><table>\n<caption>The lecture, topic by topic, and where each "
-      "is reproduced</caption>\n<tr><th>lecture</th><th>topic</th><th>section</th></tr>\n";
+      "<nav><div class=\"scroll\"><table class=\"slides\">\n<caption>The lecture, slide by slide, and where each "
+      "is reproduced</caption>\n<tr><th>slide</th><th>its formula</th><th>reproduced in</th></tr>\n";
+  const std::vector<SlideLocation> located = locate_slides(sections);
   for (const auto& topic : lecture_topics()) {
-    std::string links;
-    for (const auto& section : sections)
-      if (section.lecture == topic.lecture)
-        links += fmt::format("{}<a href=\"#{}\">{}</a>", links.empty() ? "" : "<br>", escape(section.id),
-                             escape(section.title));
-    if (links.empty()) links = "(not run: see <code>--only</code>)";
-    html +=
-        fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", escape(topic.lecture), escape(topic.title), links);
+    html += fmt::format("<tr class=\"topic\"><th colspan=\"3\">{} {}</th></tr>\n", escape(topic.lecture),
+                        escape(topic.title));
+    for (const SlideLocation& at : located) {
+      if (at.slide->lecture != topic.lecture) continue;
+      std::string where = "(not run: see <code>--only</code>)";
+      if (at.section)
+        where = fmt::format("{}<a href=\"#{}\">{}</a>",
+                            at.found && !at.slide->anchor.empty()
+                                ? fmt::format("<a href=\"#{}\">{}</a> in ", escape(at.slide->anchor),
+                                              at.slide->anchor.rfind("table-", 0) == 0 ? "table" : "figure")
+                                : "",
+                            escape(at.section->id), escape(short_title(at.section->title)));
+      html += fmt::format("<tr><td>{}</td><td class=\"formula\">{}</td><td>{}</td></tr>\n", escape(at.slide->title),
+                          formula_html(at.slide->formula), where);
+    }
   }
   return html + "</table></div></nav>\n";
 }

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "section_context.hpp"
+#include "sections.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
@@ -123,6 +124,16 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
                                        {"title", section.title},
                                        {"seconds", section.seconds},
                                        {"numbers", section.numbers}};
+  // The lecture's slides, each with where this run reproduced it.
+  numbers["slides"] = nlohmann::json::array();
+  for (const SlideLocation& at : locate_slides(result.sections))
+    numbers["slides"].push_back({{"lecture", at.slide->lecture},
+                                 {"title", at.slide->title},
+                                 {"formula", at.slide->formula},
+                                 {"section", at.slide->section},
+                                 {"anchor", at.slide->anchor},
+                                 {"run", at.section != nullptr},
+                                 {"shown", at.found}});
   const std::string json_text = numbers.dump(1);
   const std::string html_text = report_html(result.sections, options, result.seconds);
   report_json->write([&](std::ostream& out) { out << json_text; });

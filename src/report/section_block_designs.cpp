@@ -171,7 +171,8 @@ Section block_designs_section(SectionContext& context) {
               {"pattern", "Latin (one per 1/N stratum)", "most in a 1/N stratum", "empty 1/N strata",
                fmt::format("points per cell of {}×{}", table_side, table_side), "pairs on a diagonal of the N×N grid",
                "t (base 2)", "star discrepancy"},
-              {}};
+              {},
+              "stratification-counts"};
   for (const auto& [name, points] : patterns) {
     const BlockProperties p = measure(points, context.threads());
     table.rows.push_back(

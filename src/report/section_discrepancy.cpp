@@ -134,7 +134,8 @@ Section discrepancy_section(SectionContext& context) {
                {}};
   Table checks{fmt::format("Koksma–Hlawka at N = {}: measured |error| of the mean of f against the bound V(f)·D*", n),
                {"pattern"},
-               {}};
+               {},
+               "koksma-hlawka"};
   for (const auto& function : functions) checks.header.push_back(function.formula);
   Table function_table{"Test functions: closed-form integral and Hardy–Krause variation (anchored at 1)",
                        {"f", "∫f", "V_HK(f)", "derivation"},

@@ -81,7 +81,8 @@ void add_published_comparison(Section& section, double expected_c) {
       "Beside the lecture: Mitchell's (1992) random-edge discrepancy as printed, ours (mean of the "
       "realizations) and the ratio ours / Mitchell's",
       {"pattern"},
-      {}};
+      {},
+      "mitchell-1992"};
   for (std::size_t n : published_counts)
     table.header.insert(table.header.end(), {fmt::format("N = {}: ours", n), "Mitchell", "ratio"});
   nlohmann::json& published = section.numbers["mitchell_1992"];

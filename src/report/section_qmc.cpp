@@ -56,7 +56,8 @@ bool accepts(const sa::SamplerChoice& choice, std::uint64_t n) {
 Table radical_inverse_table(nlohmann::json& numbers) {
   Table table{"The radical inverse φ2(i): the binary digits of i mirrored about the radix point",
               {"i", "i in base 2", "mirrored", "φ2(i)", "φ2(i) × 16", "the slide"},
-              {}};
+              {},
+              "radical-inverse"};
   bool agrees = true;
   for (std::uint64_t i = 0; i < 16; ++i) {
     std::string binary, mirrored = "0.";

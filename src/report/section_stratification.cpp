@@ -226,7 +226,8 @@ Section stratification_section(SectionContext& context) {
                   runs, runs - 1, format_number(100 * std::sqrt(2.0 / (runs - 1)), 2)),
       {"N", "grid", "axis-aligned: cut cells", "exact", "measured / exact", "slanted: cut cells", "exact",
        "measured / exact"},
-      {}};
+      {},
+      "jittered-edge"};
   for (const auto& row : prediction)
     predicted_table.rows.push_back(
         {std::to_string(row["n"].get<std::uint64_t>()), fmt::format("{0}×{0}", row["grid"].get<std::uint64_t>()),

@@ -52,6 +52,7 @@ Section variance_section(SectionContext& context) {
   section.tables.push_back(repeated_table(
       comparison, statistics,
       fmt::format("1 vs 16 shadow rays against a {}-spp reference ({})", comparison.reference_spp, method)));
+  section.tables.back().id = "shadow-rays";
   section.numbers = repeated_numbers(comparison, statistics);
 
   // Inside the penumbra, where the light is partly hidden and a shadow ray's

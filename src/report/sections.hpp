@@ -67,4 +67,18 @@ struct LectureTopic {
 /// The lecture's 13 topics in order, for the index at the top of the page.
 const std::vector<LectureTopic>& lecture_topics();
 
+/// A figure's anchor on the page: "figure-" and its file's stem
+/// ("figures/variance-shadow-rays.png" → "figure-variance-shadow-rays").
+std::string figure_anchor(const Figure& figure);
+
+/// Where a slide is reproduced in a run: its section (null when the run
+/// left it out) and whether that section holds the slide's anchor.
+struct SlideLocation {
+  const LectureSlide* slide = nullptr;
+  const Section* section = nullptr;
+  bool found = false;
+};
+/// Every lecture slide, located among `sections`.
+std::vector<SlideLocation> locate_slides(const std::vector<Section>& sections);
+
 }  // namespace stratum::report

@@ -13,6 +13,7 @@ ls "$tmp/r/figures/"disk-maps-*.png >/dev/null && ok || fail "figure written"
 "$stratum" report --only disk-maps --quick --seed 2 -o "$tmp/r" >/dev/null 2>&1 && ok || fail "rerun into the same folder"
 grep -q "seed 2" "$tmp/r/index.html" && ok || fail "rerun replaced the page"
 "$stratum" report --list | grep -q '^disk-maps' && ok || fail "--list"
+"$stratum" report --slides | grep -q '^§11  qmc  *The radical inverse  \[i = Σ' && ok || fail "--slides: $("$stratum" report --slides | grep qmc)"
 
 expect_error "sampler" report --quick --sampler no-such-sampler -o "$tmp/bad1"
 [ ! -e "$tmp/bad1" ] && ok || fail "nothing written for an unknown sampler"

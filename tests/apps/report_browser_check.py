@@ -1,7 +1,7 @@
 """Opens a report's index.html in headless Chromium (through Selenium and
 Debian's chromium-driver) and fails when an image is missing or broken, the
 browser logged a console error, the page overflows a 420 px window
-sideways, an image is not a link to its own full-size file, a figure's
+sideways, a link inside the page points to no element, an image is not a link to its own full-size file, a figure's
 smallest font is under 10 px as displayed at the page's full width (the
 font size each PNG records, scaled by its displayed width), or the prose
 (paragraphs, captions, table cells, headings, list items) shows a registry
@@ -52,6 +52,10 @@ try:
     prose = driver.execute_script(
         "return Array.from(document.querySelectorAll('p, figcaption, caption, td, th, h1, h2, h3, h4, li, summary, dt, dd')).map(p => {"
         " const c = p.cloneNode(true); c.querySelectorAll('code').forEach(e => e.remove()); return c.textContent; });")
+    # Links inside the page whose target is missing (the index's slide links).
+    dangling = driver.execute_script(
+        "return Array.from(document.querySelectorAll('a[href^=\"#\"]')).map(a => a.getAttribute('href'))"
+        ".filter(h => !document.getElementById(h.slice(1)));")
     log = driver.get_log("browser")
     driver.set_window_size(420, 900)
     overflow = driver.execute_script(
@@ -59,6 +63,8 @@ try:
 finally:
     driver.quit()
 
+for href in dangling:
+    failures.append(f"a link to {href}, which is not on the page")
 if overflow[0] > overflow[1]:
     failures.append(f"the page is {overflow[0]} px wide in a {overflow[1]} px window")
 for src, _, natural, shown, href in images:

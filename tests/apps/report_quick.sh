@@ -96,6 +96,16 @@ assert "jittered:none" in stratification["slanted_edge"]["samplers"]
 views = numbers["sections"]["four-views"]["numbers"]
 assert views["quadrature"]["gauss_legendre"]["gaussian_error"] < views["quadrature"]["midpoint"]["gaussian_error"]
 assert "poisson-disk(periodic=1)" in views["patterns"]
+# The lecture slide by slide: every slide reproduced by a figure or table of this run, each linked from the
+# index; every section shows a formula of its slides under its heading.
+slides = numbers["slides"]
+assert len(slides) >= 26 and all(s["run"] and s["shown"] for s in slides), [s for s in slides if not s["shown"]]
+for s in slides:
+    if s["anchor"]:
+        assert f'id="{s["anchor"]}"' in page_text and f'href="#{s["anchor"]}"' in page_text, s
+for section in ids:
+    body = page_text.split(f'<section id="{section}">', 1)[1].split("</section>", 1)[0]
+    assert '<dd class="formula">' in body.split("<p>", 1)[0], f"section {section} shows no formula under its heading"
 print(f"{len(ids)} sections, {sum(map(len, page.images.values()))} figures")
 PY
 [ -z "$(ls -A "$out" | grep partial)" ] && ok || fail "no staging folder left behind"

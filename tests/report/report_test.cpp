@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -49,20 +50,71 @@ TEST(ReportOptions, RejectsUnknownSamplersSectionsAndThreadsBeforeAnyWork) {
 
 TEST(ReportHtml, EscapesTextAndListsEverySection) {
   stratum::report::Section section;
-  section.id = "x";
+  section.id = "path-tracing";
   section.lecture = "§9";
   section.title = "A <b> & \"c\"";
   section.text = {"1 < 2"};
-  section.figures = {{"figures/x-a.png", "caption <i>"}};
+  section.figures = {{"figures/path-tracing-complete-incomplete.png", "caption <i>"}};
   section.tables = {{"t", {"h"}, {{"<td>"}}}};
   const std::string html = stratum::report::report_html({section}, ReportOptions{}, 1.0);
   EXPECT_NE(html.find("A &lt;b&gt; &amp; &quot;c&quot;"), std::string::npos);
   EXPECT_NE(html.find("<p>1 &lt; 2</p>"), std::string::npos);
-  EXPECT_NE(html.find("<img src=\"figures/x-a.png\""), std::string::npos);
+  EXPECT_NE(html.find("<img src=\"figures/path-tracing-complete-incomplete.png\""), std::string::npos);
   EXPECT_NE(html.find("<td>&lt;td&gt;</td>"), std::string::npos);
-  EXPECT_NE(html.find("href=\"#x\""), std::string::npos);
+  EXPECT_NE(html.find("href=\"#path-tracing\""), std::string::npos);
   EXPECT_EQ(html.find("<b>"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);  // nothing to run, nothing fetched
+}
+
+TEST(LectureSlides, EverySlideNamesASectionOfItsLectureAndAnAnchorOfThatSection) {
+  const auto& sections = stratum::report::report_sections();
+  for (const auto& slide : stratum::report::lecture_slides()) {
+    const auto section =
+        std::find_if(sections.begin(), sections.end(), [&](const auto& info) { return info.id == slide.section; });
+    ASSERT_NE(section, sections.end()) << slide.title << ": no section " << slide.section;
+    EXPECT_EQ(section->lecture, slide.lecture) << slide.title;
+    EXPECT_FALSE(slide.title.empty());
+    const bool own_figure = slide.anchor.rfind("figure-" + slide.section + "-", 0) == 0;
+    EXPECT_TRUE(slide.anchor.empty() || own_figure || slide.anchor.rfind("table-", 0) == 0) << slide.anchor;
+  }
+}
+
+TEST(LectureSlides, EveryTopicHasSlidesAndEverySectionAFormula) {
+  const auto& slides = stratum::report::lecture_slides();
+  for (const auto& topic : stratum::report::lecture_topics())
+    EXPECT_TRUE(std::any_of(slides.begin(), slides.end(), [&](const auto& s) { return s.lecture == topic.lecture; }))
+        << topic.lecture;
+  for (const auto& section : stratum::report::report_sections())
+    EXPECT_TRUE(std::any_of(slides.begin(), slides.end(),
+                            [&](const auto& s) { return s.section == section.id && !s.formula.empty(); }))
+        << section.id << " shows no formula of the lecture";
+}
+
+TEST(LectureSlides, TheIndexLinksASlideToItsFigureOrTableOnlyWhereTheRunHasIt) {
+  using stratum::report::Section;
+  Section qmc;
+  qmc.id = "qmc";
+  qmc.lecture = "§11";
+  qmc.title = "QMC";
+  qmc.tables = {{"φ2", {"i"}, {}, "radical-inverse"}};  // the radical-inverse table, but no star-vs-n figure
+  const auto located = stratum::report::locate_slides({qmc});
+  for (const auto& at : located) {
+    EXPECT_EQ(at.section != nullptr, at.slide->section == "qmc") << at.slide->title;
+    if (at.slide->anchor == "table-radical-inverse") EXPECT_TRUE(at.found);
+    if (at.slide->anchor == "figure-qmc-star-vs-n") EXPECT_FALSE(at.found);
+  }
+  const std::string html = stratum::report::report_html({qmc}, ReportOptions{}, 1.0);
+  EXPECT_NE(html.find("href=\"#table-radical-inverse\""), std::string::npos);
+  EXPECT_NE(html.find("id=\"table-radical-inverse\""), std::string::npos);
+  EXPECT_EQ(html.find("href=\"#figure-qmc-star-vs-n\""), std::string::npos);      // not drawn: no dangling link
+  EXPECT_NE(html.find("(not run: see <code>--only</code>)"), std::string::npos);  // the other sections
+  // The section shows its slides' formulas under its heading.
+  const auto heading = html.find("<section id=\"qmc\">");
+  ASSERT_NE(heading, std::string::npos);
+  EXPECT_NE(html.find("<dd class=\"formula\">i = Σ d<sub>k</sub> b<sup>k</sup> ⇒ φ<sub>b</sub>(i) = Σ d<sub>k</sub> "
+                      "b<sup>−k−1</sup>",
+                      heading),
+            std::string::npos);
 }
 
 TEST(ReportFormat, SignificantDigitsAndExponents) {

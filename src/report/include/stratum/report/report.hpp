@@ -36,6 +36,9 @@ struct Table {
   std::string caption;
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;
+  /// An anchor for links to it ("table-<id>" on the page), where a lecture
+  /// slide points to it (lecture_slides()); empty: none.
+  std::string id = {};
 };
 
 /// One section of the page, as built by its section function.
@@ -68,6 +71,22 @@ struct SectionInfo {
 
 /// Every section, in the lecture's order.
 const std::vector<SectionInfo>& report_sections();
+
+/// A slide of the lecture as LECTURE.md states it, its formula where it
+/// states one, and where the report reproduces it: a section and an anchor
+/// in that section ("figure-<file stem>", "table-<Table::id>"; empty: the
+/// section as a whole). The page's index lists them, and each section shows
+/// the formulas of its slides under its heading.
+struct LectureSlide {
+  std::string lecture;  ///< "§2"
+  std::string title;    ///< "Soft shadows: 1 shadow ray per eye ray versus 16"
+  std::string formula;  ///< "V[mean of N] = V[Y]/N" (Unicode); empty: none on the slide
+  std::string section;  ///< a report_sections() id
+  std::string anchor;   ///< "figure-variance-shadow-rays"
+};
+
+/// Every slide, in the lecture's order (lecture_slides.cpp).
+const std::vector<LectureSlide>& lecture_slides();
 
 /// Checks every option before any work: the folder can be created and
 /// written, every extra sampler exists (with its randomizer) and takes 2D
