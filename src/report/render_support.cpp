@@ -81,6 +81,27 @@ std::vector<double> displayed_difference(const render::Image& image, const rende
   return absolute_difference(shown(image), shown(other));
 }
 
+Crop heaviest_window(const std::vector<double>& weight, int width, int height, double fraction,
+                     const std::string& label) {
+  const int side = std::max(1, int(std::lround(fraction * std::min(width, height))));
+  // Summed-area table: sum at (x, y) = the weights above and left of pixel (x, y).
+  const std::size_t stride = std::size_t(width) + 1;
+  std::vector<double> sum(stride * (height + 1), 0.0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      sum[(y + 1) * stride + x + 1] = weight[std::size_t(y) * width + x] + sum[y * stride + x + 1] +
+                                      sum[(y + 1) * stride + x] - sum[y * stride + x];
+  const auto at = [&](int x, int y) { return sum[y * stride + x]; };
+  double best = -1;
+  int best_x = 0, best_y = 0;
+  for (int y = 0; y + side <= height; ++y)
+    for (int x = 0; x + side <= width; ++x) {
+      const double total = at(x + side, y + side) + at(x, y) - at(x + side, y) - at(x, y + side);
+      if (total > best) best = total, best_x = x, best_y = y;
+    }
+  return {double(best_x) / width, double(best_y) / height, double(side) / width, double(side) / height, label};
+}
+
 std::vector<bool> box_mask(const PixelBox& box, int width, int height) {
   std::vector<bool> mask(std::size_t(width) * height, false);
   for (int y = box.y; y < box.y + box.height; ++y)
@@ -165,10 +186,11 @@ RegionError region_error(const render::Image& image, const render::Image& refere
 
 RenderedComparison run_comparison(const render::ComparisonScene& scene,
                                   const std::vector<render::CompareConfig>& configs, std::uint32_t reference_spp,
-                                  const std::string& cache_dir) {
+                                  const std::string& cache_dir, double equal_time) {
   render::CompareOptions options;
   options.reference_spp = reference_spp;
   options.cache_dir = cache_dir;
+  options.equal_time = equal_time;
   render::CompareImages pictures;
   RenderedComparison result;
   result.rows = render::compare(scene.scene, scene.key, configs, options, &pictures);

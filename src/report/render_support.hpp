@@ -64,6 +64,12 @@ std::vector<double> absolute_difference(const render::Image& image, const render
 /// does not outshine every other difference).
 std::vector<double> displayed_difference(const render::Image& image, const render::Image& other);
 
+/// The square window of side `fraction` × the image's shorter side that
+/// holds the largest sum of `weight` (width·height, row-major; the first
+/// such from the top left), as a crop: where an effect is largest.
+Crop heaviest_window(const std::vector<double>& weight, int width, int height, double fraction,
+                     const std::string& label);
+
 /// Per-pixel flags of the pixels inside `box` (for masked_mean_squared_error).
 std::vector<bool> box_mask(const PixelBox& box, int width, int height);
 
@@ -106,9 +112,11 @@ struct RenderedComparison {
 /// Renders each configuration of `configs` on `scene` and measures it with
 /// render::compare (MSE, relative MSE, seconds, efficiency = 1 / (MSE ×
 /// seconds), ratios to the first row), keeping the images for the figures.
+/// `equal_time` > 0: each configuration renders passes until that many
+/// seconds (render::CompareOptions::equal_time).
 RenderedComparison run_comparison(const render::ComparisonScene& scene,
                                   const std::vector<render::CompareConfig>& configs, std::uint32_t reference_spp,
-                                  const std::string& cache_dir);
+                                  const std::string& cache_dir, double equal_time = 0);
 
 /// Mean squared error over the pixels flagged in `mask` (width·height).
 double masked_mean_squared_error(const render::Image& image, const render::Image& reference,

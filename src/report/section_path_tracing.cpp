@@ -15,6 +15,65 @@
 
 namespace stratum::report {
 
+namespace {
+
+/// Where the two shapes differ: the ceiling, lit only by light that bounced
+/// (sampled by every eye ray's path: 4 paths a pixel against 64), and the
+/// tall block's left edge against the back wall (the pixel area: 4 eye rays
+/// against 64).
+const Crop ceiling{0.16, 0.02, 0.25, 0.2, "ceiling, lit by bounces only"};
+const Crop block_edge{0.17, 0.36, 0.22, 0.22, "tall block's edge"};
+
+/// The first seed drawn at the pictures' size (256×256 in the full report):
+/// the reference; complete and incomplete at equal rays; the complete shape
+/// given the incomplete render's time; each outlined where they differ, the
+/// crops enlarged and the errors as heat maps. Returns its numbers.
+nlohmann::json path_tracing_picture(SectionContext& context, Section& section,
+                                    const std::vector<render::CompareConfig>& configs) {
+  const RenderScale scale = picture_scale(context);
+  const auto scene = render::comparison_scene("", false, scale.width, scale.height);
+  const RenderedComparison rays = run_comparison(scene, configs, scale.reference_spp, context.cache_dir());
+  std::vector<render::CompareConfig> timed{configs.at(0)};
+  timed.front().label = "complete 4x16 per pass";
+  const double budget = rays.rows.at(1).seconds;
+  const RenderedComparison time = run_comparison(scene, timed, scale.reference_spp, context.cache_dir(), budget);
+  const render::CompareRow& complete = rays.rows.at(0);
+  const render::CompareRow& incomplete = rays.rows.at(1);
+  const render::CompareRow& complete_timed = time.rows.at(0);
+  const std::vector<GridColumn> columns{
+      {&rays.reference, fmt::format("reference ({} spp)", rays.reference_spp)},
+      {&rays.images.at(0), fmt::format("complete {}×{}\nMSE {}", complete.samples, configs.at(0).settings.light_samples,
+                                       format_number(complete.mse))},
+      {&rays.images.at(1),
+       fmt::format("incomplete {}×{}, {}\nMSE {}", incomplete.samples, configs.at(1).settings.light_samples,
+                   format_seconds(incomplete.seconds), format_number(incomplete.mse))},
+      {&time.images.at(0), fmt::format("complete, the same time: {}×{}\nMSE {}", complete_timed.samples,
+                                       configs.at(0).settings.light_samples, format_number(complete_timed.mse))}};
+  section.figures.push_back(image_figure(
+      context, picture_grid(columns, {ceiling, block_edge}, &rays.reference, "|error| against the reference"),
+      "complete-incomplete-picture",
+      fmt::format("Complete against incomplete path tracing at {}×{} pixels (first seed): the reference, both at {} "
+                  "shadow rays per pixel, and the complete shape given the incomplete render's time ({}); below, "
+                  "the ceiling (lit only by light that bounced) and the tall block's edge enlarged, and each render's "
+                  "error",
+                  scale.width, scale.height, complete.samples * configs.at(0).settings.light_samples,
+                  format_seconds(budget)),
+      4));
+  section.text.push_back(fmt::format(
+      "Drawn at {}×{} pixels against a {}-spp reference (first seed), the complete render's MSE is {} and the "
+      "incomplete one's {}; given the incomplete render's {}, the complete shape reaches {} eye rays per pixel and "
+      "MSE {}. The enlarged ceiling shows the bounced light each shape sees through its number of paths, the "
+      "block's edge the pixel area each samples with its number of eye rays.",
+      scale.width, scale.height, rays.reference_spp, format_number(complete.mse), format_number(incomplete.mse),
+      format_seconds(budget), complete_timed.samples, format_number(complete_timed.mse)));
+  nlohmann::json numbers = comparison_numbers(rays);
+  numbers["equal_time_seconds"] = budget;
+  numbers["complete_at_equal_time"] = comparison_numbers(time)["rows"];
+  return numbers;
+}
+
+}  // namespace
+
 Section path_tracing_section(SectionContext& context) {
   Section section = context.start();
   const RenderScale scale = render_scale(context);
@@ -109,6 +168,7 @@ Section path_tracing_section(SectionContext& context) {
       median(std::vector<double>(timed_run.samples[0].begin(), timed_run.samples[0].end())), complete_spp,
       complete_shadow, median(std::vector<double>(timed_run.samples[1].begin(), timed_run.samples[1].end()))));
   section.text.push_back("Intervals: " + method + ".");
+  section.numbers["picture"] = path_tracing_picture(context, section, configs);
   section.try_it = {"stratum compare --builtin path --width 64 --height 64",
                     "stratum compare --builtin path --width 64 --height 64 --equal-time 2"};
   return section;

@@ -62,6 +62,34 @@ TEST(ReportPictures, CropsScaleWithTheImageAndKeepTheirPixels) {
   EXPECT_NEAR(error.sample_variance, (0.002 + 0.003) / 2 * 4, 1e-12);
 }
 
+TEST(ReportPictures, TheHeaviestWindowCoversWhereTheWeightIs) {
+  // A 40×20 image, weight 1 everywhere and 5 on a 3×3 block at (30, 12):
+  // the 5-pixel window (a quarter of 20) holding the most covers the block,
+  // and brute force over every window agrees with the summed-area table.
+  const int width = 40, height = 20;
+  std::vector<double> weight(width * height, 1.0);
+  for (int y = 12; y < 15; ++y)
+    for (int x = 30; x < 33; ++x) weight[y * width + x] = 5;
+  const Crop crop = heaviest_window(weight, width, height, 0.25, "block");
+  const PixelBox box = crop_pixels(crop, width, height);
+  EXPECT_EQ(box.width, 5);
+  EXPECT_EQ(box.height, 5);
+  EXPECT_TRUE(box.x <= 30 && box.x + box.width >= 33 && box.y <= 12 && box.y + box.height >= 15)
+      << box.x << "," << box.y;
+  double best = 0;
+  int best_x = -1, best_y = -1;
+  for (int y = 0; y + 5 <= height; ++y)
+    for (int x = 0; x + 5 <= width; ++x) {
+      double total = 0;
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i) total += weight[(y + j) * width + x + i];
+      if (total > best) best = total, best_x = x, best_y = y;
+    }
+  EXPECT_EQ(box.x, best_x);
+  EXPECT_EQ(box.y, best_y);
+  EXPECT_EQ(crop.label, "block");
+}
+
 TEST(ReportPictures, DifferencesAndTheGrid) {
   render::Image image = ramp(4, 4);
   for (double& v : image.rgb) v = 0.2;

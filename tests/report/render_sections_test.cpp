@@ -309,6 +309,14 @@ TEST(ReportRenderSections, SpaceTimeTablesAndMotionBlur) {
     expect_repeated_row(row, repeats, label);
     expect_unbiased_first_seed(close, label, true);
   }
+  // The close-up drawn for the eye: the three assignments and the window
+  // where they differ most, inside the image.
+  const auto& picture = section.numbers["motion_picture"];
+  EXPECT_EQ(picture["rows"].size(), 3u);
+  const auto crop = picture["crop"].get<std::vector<int>>();
+  ASSERT_EQ(crop.size(), 4u);
+  EXPECT_EQ(crop[2], 8);  // a quarter of 32
+  EXPECT_TRUE(crop[0] >= 0 && crop[1] >= 0 && crop[0] + crop[2] <= 32 && crop[1] + crop[3] <= 32);
   // In time (16 frames at 1 spp, 32×32, quick): random's frames are
   // independent (temporal power ~1 at the one bin below 1/8, sd ~0.06; lag-1
   // correlation -1/16 from the centring), frames that continue each pixel's
@@ -369,6 +377,21 @@ TEST(ReportRenderSections, PathTracingAtEqualRaysAndAtEqualTime) {
                     : ratio["high"].get<double>() < 1 ? "complete"
                                                       : "neither");
   EXPECT_EQ(section.text.front().rfind("At equal time, ", 0), 0u) << section.text.front();
+  // The picture (the pictures' size, first seed): both shapes at equal rays,
+  // and the complete one given the incomplete render's time, in whole passes
+  // of its 4 eye rays; the figure is drawn.
+  const auto& picture = n["picture"];
+  EXPECT_EQ(picture["width"], 32);  // quick
+  EXPECT_EQ(picture["rows"]["complete 4x16"]["spp"], 4);
+  EXPECT_EQ(picture["rows"]["incomplete 64x1"]["spp"], 64);
+  EXPECT_DOUBLE_EQ(picture["equal_time_seconds"].get<double>(),
+                   picture["rows"]["incomplete 64x1"]["seconds"].get<double>());
+  const auto& at_time = picture["complete_at_equal_time"]["complete 4x16 per pass"];
+  EXPECT_EQ(at_time["spp"].get<unsigned>() % 4, 0u);
+  EXPECT_GE(at_time["seconds"].get<double>(), picture["equal_time_seconds"].get<double>());
+  EXPECT_TRUE(std::any_of(section.figures.begin(), section.figures.end(), [](const Figure& figure) {
+    return figure.file == "figures/path-tracing-complete-incomplete-picture.png";
+  }));
 }
 
 }  // namespace
