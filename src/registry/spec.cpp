@@ -6,6 +6,8 @@
 #include <cstring>
 #include <thread>
 
+#include <sched.h>
+
 #include "stratum/registry.hpp"
 #include "stratum/util/error.hpp"
 
@@ -330,23 +332,72 @@ std::uint64_t parse_uint64(std::string_view argument, std::string_view text) {
 
 std::uint64_t parse_seed(std::string_view text) { return parse_uint64("seed", text); }
 
+namespace {
+
+/// A whole decimal count > 0, or 0.
+unsigned positive_count(std::string_view text) {
+  unsigned value = 0;
+  const char* end = text.data() + text.size();
+  const auto [next, error] = std::from_chars(text.data(), end, value);
+  return error == std::errc{} && next == end ? value : 0;
+}
+
+/// The CPUs this process may run on, or 0 where the mask cannot be read.
+unsigned affinity_cpus() {
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  if (::sched_getaffinity(0, sizeof mask, &mask) != 0) return 0;
+  return static_cast<unsigned>(CPU_COUNT(&mask));
+}
+
+}  // namespace
+
+unsigned slurm_tasks_on_node(std::string_view list, unsigned node) {
+  // Items "T" or "T(xR)" separated by commas: T tasks on each of R nodes.
+  std::uint64_t first = 0;  // the first node of the item
+  while (!list.empty()) {
+    const std::string_view item = list.substr(0, list.find(','));
+    list.remove_prefix(std::min(list.size(), item.size() + 1));
+    const std::size_t open = item.find("(x");
+    const unsigned tasks = positive_count(item.substr(0, open));
+    unsigned repeat = 1;
+    if (open != std::string_view::npos) {
+      if (item.back() != ')') return 0;
+      repeat = positive_count(item.substr(open + 2, item.size() - open - 3));
+    }
+    if (tasks == 0 || repeat == 0) return 0;
+    if (node < first + repeat) return tasks;
+    first += repeat;
+  }
+  return 0;
+}
+
+unsigned local_processes() {
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* text = std::getenv(name)) return std::max(1u, positive_count(text));
+  const char* tasks = std::getenv("SLURM_STEP_TASKS_PER_NODE");
+  const char* node = std::getenv("SLURM_NODEID");
+  if (tasks && node && std::getenv("SLURM_STEP_ID")) {  // inside an srun step, not just an allocation
+    const std::string_view node_text(node);
+    unsigned index = 0;
+    const auto [next, error] = std::from_chars(node_text.data(), node_text.data() + node_text.size(), index);
+    if (error == std::errc{} && next == node_text.data() + node_text.size())
+      return std::max(1u, slurm_tasks_on_node(tasks, index));
+  }
+  return 1;
+}
+
 unsigned resolve_threads(std::int64_t threads) {
   require(threads >= 0 && threads <= max_threads, "threads", threads,
           "must be an integer in [0, " + std::to_string(max_threads) + "] (0: every core)");
   if (threads > 0) return static_cast<unsigned>(threads);
-  // The processes of an MPI job on one machine share its cores (Open MPI
-  // and MPICH say how many there are): each takes its share, not all.
-  unsigned cores = std::thread::hardware_concurrency();
-  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
-    if (const char* text = std::getenv(name)) {
-      unsigned local = 0;
-      const char* end = text + std::strlen(text);
-      if (const auto [next, error] = std::from_chars(text, end, local);
-          error == std::errc{} && next == end && local > 0)
-        cores /= local;
-      break;
-    }
-  return std::clamp(cores, 1u, static_cast<unsigned>(max_threads));
+  // A launcher that binds a process (mpirun's --bind-to core, srun's
+  // --cpu-bind, taskset) gives it its share of the cores already; unbound,
+  // the processes of a job on one machine each take their share.
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned allowed = affinity_cpus();
+  const unsigned share = allowed > 0 && allowed < cores ? allowed : cores / local_processes();
+  return std::clamp(share, 1u, static_cast<unsigned>(max_threads));
 }
 
 }  // namespace stratum

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "sections.hpp"
+#include "stratum/registry/spec.hpp"
 
 namespace stratum::report {
 
@@ -278,8 +279,8 @@ std::string report_html(const std::vector<Section>& sections, const ReportOption
       "({}, {} used) in {} ({} run, seed {}{}). Regenerate with <code>stratum report{}</code>; the "
       "measurements are also in <a href=\"report.json\">report.json</a>.</p>\n",
       STRATUM_VERSION_TEXT, escape(compiler), counted(std::max(1u, std::thread::hardware_concurrency()), "core"),
-      counted(options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency()), "thread"),
-      escape(format_seconds(seconds)), options.quick ? "quick" : "full", options.seed,
+      counted(stratum::resolve_threads(options.threads), "thread"), escape(format_seconds(seconds)),
+      options.quick ? "quick" : "full", options.seed,
       options.extra_samplers.empty()
           ? ""
           : ", extra samplers " + escape(fmt::format("{}", fmt::join(options.extra_samplers, ", "))),

@@ -15,6 +15,7 @@
 #include "sections.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/error.hpp"
 
 namespace stratum::report {
@@ -57,10 +58,6 @@ struct StagingFolder {
   }
 };
 
-unsigned resolve_threads(unsigned threads) {
-  return threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-}
-
 }  // namespace
 
 void validate_report_options(const ReportOptions& options) {
@@ -96,7 +93,7 @@ ReportResult write_report(const ReportOptions& options, const std::function<void
   StagingFolder staging{io::make_staging_folder(directory, "report")};  // a kill -9 leftover: removed by the next run
   fs::create_directory(staging.path / "figures");
 
-  const unsigned threads = resolve_threads(options.threads);
+  const unsigned threads = stratum::resolve_threads(options.threads);  // the one thread rule (spec.hpp)
   std::vector<plot::PlotJob> plots;
   ReportResult result;
   for (const auto& info : report_sections()) {

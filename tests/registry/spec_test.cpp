@@ -4,6 +4,7 @@
 #include "stratum/registry/spec.hpp"
 
 #include <gtest/gtest.h>
+#include <sched.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -201,20 +202,83 @@ TEST(SamplerSpec, ThreadRuleZeroIsEveryCore) {
   expect_contains(error_of([] { resolve_threads(1025); }), {"invalid threads = 1025: "});
 }
 
+/// The CPUs of this process's affinity mask.
+unsigned allowed_cpus() {
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  EXPECT_EQ(::sched_getaffinity(0, sizeof mask, &mask), 0);
+  return static_cast<unsigned>(CPU_COUNT(&mask));
+}
+
 TEST(SamplerSpec, ThreadRuleSharesTheCoresOfAnMpiJob) {
-  const unsigned cores = std::min(std::max(1u, std::thread::hardware_concurrency()), 1024u);
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  // Bound by the launcher (a cpuset smaller than the machine), the mask is the share and the counts are not read.
+  const bool bound = allowed_cpus() < hardware;
+  const auto expected = [&](unsigned processes) {
+    return std::clamp(bound ? allowed_cpus() : hardware / processes, 1u, 1024u);
+  };
   for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"}) {
     ::setenv(name, "1", 1);
-    EXPECT_EQ(resolve_threads(0), cores) << name;
+    EXPECT_EQ(resolve_threads(0), expected(1)) << name;
     ::setenv(name, "2", 1);
-    EXPECT_EQ(resolve_threads(0), std::clamp(std::thread::hardware_concurrency() / 2, 1u, 1024u)) << name;
+    EXPECT_EQ(local_processes(), 2u) << name;
+    EXPECT_EQ(resolve_threads(0), expected(2)) << name;
     ::setenv(name, "100000", 1);  // more processes than cores: one thread each
-    EXPECT_EQ(resolve_threads(0), 1u) << name;
+    EXPECT_EQ(resolve_threads(0), bound ? expected(1) : 1u) << name;
     ::setenv(name, "2x", 1);  // not a count: ignored
-    EXPECT_EQ(resolve_threads(0), cores) << name;
+    EXPECT_EQ(local_processes(), 1u) << name;
+    EXPECT_EQ(resolve_threads(0), expected(1)) << name;
     EXPECT_EQ(resolve_threads(3), 3u) << name;  // an explicit count is kept
     ::unsetenv(name);
   }
+}
+
+TEST(SamplerSpec, ThreadRuleReadsSlurmsTasksOnThisNode) {
+  // srun's SLURM_STEP_TASKS_PER_NODE: "T(xR)" is T tasks on each of R nodes.
+  EXPECT_EQ(slurm_tasks_on_node("2(x3),1", 0), 2u);
+  EXPECT_EQ(slurm_tasks_on_node("2(x3),1", 2), 2u);
+  EXPECT_EQ(slurm_tasks_on_node("2(x3),1", 3), 1u);
+  EXPECT_EQ(slurm_tasks_on_node("2(x3),1", 4), 0u);  // past the list
+  EXPECT_EQ(slurm_tasks_on_node("4", 0), 4u);
+  EXPECT_EQ(slurm_tasks_on_node("1,3(x2)", 2), 3u);
+  for (const char* bad : {"", "x", "2(x", "2(x3", "2(x0)", "0", "-1", "2(y3)", "2,,1"})
+    EXPECT_EQ(slurm_tasks_on_node(bad, 1), 0u) << bad;
+  ::setenv("SLURM_STEP_TASKS_PER_NODE", "3(x2),1", 1);
+  ::setenv("SLURM_NODEID", "1", 1);
+  EXPECT_EQ(local_processes(), 1u);  // an allocation without a step (no SLURM_STEP_ID): not a job's process
+  ::setenv("SLURM_STEP_ID", "0", 1);
+  EXPECT_EQ(local_processes(), 3u);
+  ::setenv("SLURM_NODEID", "2", 1);
+  EXPECT_EQ(local_processes(), 1u);
+  ::setenv("SLURM_NODEID", "9", 1);  // a node the list does not reach: read as one process
+  EXPECT_EQ(local_processes(), 1u);
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "5", 1);  // the MPI library's own count comes first
+  EXPECT_EQ(local_processes(), 5u);
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "SLURM_STEP_TASKS_PER_NODE", "SLURM_NODEID", "SLURM_STEP_ID"})
+    ::unsetenv(name);
+}
+
+TEST(SamplerSpec, ThreadRuleKeepsToTheCpusALauncherBoundItTo) {
+  cpu_set_t saved;
+  CPU_ZERO(&saved);
+  ASSERT_EQ(::sched_getaffinity(0, sizeof saved, &saved), 0);
+  int first = 0;
+  while (!CPU_ISSET(first, &saved)) ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(::sched_setaffinity(0, sizeof one, &one), 0);  // as mpirun --bind-to core or taskset -c would
+  const unsigned bound = resolve_threads(0);
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "1", 1);
+  const unsigned bound_in_job = resolve_threads(0);
+  ::unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  ASSERT_EQ(::sched_setaffinity(0, sizeof saved, &saved), 0);
+  EXPECT_EQ(bound, 1u);  // one CPU allowed: one thread, not the machine's cores
+  EXPECT_EQ(bound_in_job, 1u);
+  EXPECT_EQ(resolve_threads(0), std::clamp(allowed_cpus() < std::max(1u, std::thread::hardware_concurrency())
+                                               ? allowed_cpus()
+                                               : std::max(1u, std::thread::hardware_concurrency()),
+                                           1u, 1024u));
 }
 
 }  // namespace

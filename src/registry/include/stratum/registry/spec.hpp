@@ -81,10 +81,23 @@ std::uint64_t parse_seed(std::string_view text);
 /// Largest thread count a face may ask for.
 inline constexpr std::int64_t max_threads = 1024;
 
-/// The one thread rule: 0 means every core (std::thread::hardware_concurrency,
-/// at most max_threads; in an MPI job, the machine's cores divided among its
-/// processes there); 1..max_threads as given; anything else is refused.
-/// 0 is every CLI subcommand's default.
+/// The one thread rule: 0 means every core this process may use, at most
+/// max_threads: the CPUs of its affinity mask where the launcher bound it
+/// to some of the machine's (mpirun, srun, taskset), else the machine's
+/// cores divided among the job's processes on it (local_processes());
+/// 1..max_threads as given; anything else is refused. 0 is every CLI
+/// subcommand's default.
 unsigned resolve_threads(std::int64_t threads);
+
+/// The processes of this job on this machine: Open MPI's
+/// OMPI_COMM_WORLD_LOCAL_SIZE, MPICH's MPI_LOCALNRANKS, or Slurm's tasks of
+/// this step on this node (srun: SLURM_STEP_TASKS_PER_NODE at SLURM_NODEID);
+/// 1 outside a job or where none of them reads as a count.
+unsigned local_processes();
+
+/// Slurm's per-node task list ("2(x3),1": 2 tasks on each of nodes 0-2,
+/// 1 on node 3) read at `node`; 0 where the text is not such a list or
+/// `node` is past its end.
+unsigned slurm_tasks_on_node(std::string_view list, unsigned node);
 
 }  // namespace stratum
