@@ -38,5 +38,7 @@ row "discrepancy -m cd, N = 240000, d = 6" discrepancy -m cd -s random -n 240000
 row "discrepancy -m wd, N = 120000, d = 6" discrepancy -m wd -s random -n 120000 -d 6 --threads 1 --json
 row "render --reference, Cornell box 256x256, 128 spp" render --reference --reference-spp 128 --width 256 --height 256 \
   --threads 1 --quiet --cache @CACHE@ -o "$tmp/ref.png"
+row "render --reference, Cornell box 256x256, 256 spp" render --reference --reference-spp 256 --width 256 --height 256 \
+  --threads 1 --quiet --cache @CACHE@ -o "$tmp/ref.png"
 row "converge, 2 samplers x 6 N x 64 runs" converge --integrand genz-gaussian -d 4 --samplers random,sobol:owen \
   --n 64:65536:4 --runs 64 --threads 1 --json
