@@ -12,6 +12,12 @@ namespace {
 constexpr std::int64_t max_spp = std::int64_t{1} << 24;
 constexpr std::int64_t max_side = 16384;
 
+/// An image width or height, the same rule and words for render and compare.
+void check_image_side(const char* argument, std::int64_t value) {
+  require(value >= 1 && value <= max_side, argument, value,
+          "must be an integer in [1, " + std::to_string(max_side) + "]");
+}
+
 /// --reference-spp, read alike by render and compare.
 void check_reference_spp(std::int64_t spp) {
   require(spp >= 1 && spp <= max_spp, "reference-spp", spp, "must be in [1, 2^24]");
@@ -36,10 +42,8 @@ void prepare_render_job(RenderJob& job) {
   s.sampler.frame = static_cast<std::uint32_t>(job.frame);
   validate_settings(s);
   // Each given size replaces the scene's; 0 is not "unset".
-  require(!job.width || (*job.width >= 1 && *job.width <= max_side), "width", job.width.value_or(0),
-          "must be an integer in [1, 16384]");
-  require(!job.height || (*job.height >= 1 && *job.height <= max_side), "height", job.height.value_or(0),
-          "must be an integer in [1, 16384]");
+  if (job.width) check_image_side("width", *job.width);
+  if (job.height) check_image_side("height", *job.height);
   require(job.variance.empty() || job.reference || job.spp >= 2, job.variance_argument, job.variance,
           "needs spp 2 or more: a pixel's variance is estimated from its samples (this render takes " +
               std::to_string(job.spp) + ")");
@@ -76,8 +80,8 @@ CompareJobResult run_compare_job(const CompareJob& job) {
   require(job.builtin.empty() || !job.configs, "configs", job.configs_origin,
           "give a built-in comparison or configurations, not both (builtin " + job.builtin + ")");
   check_reference_spp(job.reference_spp);
-  require(job.width >= 1 && job.width <= max_side, "width", job.width, "must be in [1, 16384]");
-  require(job.height >= 1 && job.height <= max_side, "height", job.height, "must be in [1, 16384]");
+  check_image_side("width", job.width);
+  check_image_side("height", job.height);
   require(job.repeats >= 1 && job.repeats <= 1000, "repeats", job.repeats, "must be in [1, 1000]");
   if (job.confidence)
     require(job.repeats >= 2, "confidence", shortest(*job.confidence),

@@ -141,6 +141,8 @@ if "$stratum" render --help >/dev/null 2>&1; then
   # --- render options: no silent 0, no variance from one sample ---------------
   expect_error "invalid width = 0: must be an integer in \[1, 16384\]" render -o "$tmp/x.png" --width 0
   expect_error "invalid height = 0: must be an integer in \[1, 16384\]" render -o "$tmp/x.png" --height 0
+  expect_error "invalid width = 0: must be an integer in \[1, 16384\]" compare --width 0  # the same words as render
+  expect_error "invalid height = 16385: must be an integer in \[1, 16384\]" compare --height 16385
   expect_error "invalid passes = 0: must be in \[1, 2^24\]" render -o "$tmp/x.png" --passes 0
   expect_error "invalid variance = $tmp/v.exr: needs spp 2 or more" \
     render -o "$tmp/x.png" --spp 1 --variance "$tmp/v.exr" --width 8 --height 8

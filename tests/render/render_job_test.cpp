@@ -85,7 +85,7 @@ TEST(CompareJob, RefusesEachBadFieldBeforeRendering) {
     change(changed);
     return compare_refusal(changed);
   };
-  EXPECT_EQ(with([](CompareJob& j) { j.width = 0; }), "invalid width = 0: must be in [1, 16384]");
+  EXPECT_EQ(with([](CompareJob& j) { j.width = 0; }), "invalid width = 0: must be an integer in [1, 16384]");
   EXPECT_EQ(with([](CompareJob& j) { j.reference_spp = 0; }), "invalid reference-spp = 0: must be in [1, 2^24]");
   EXPECT_EQ(with([](CompareJob& j) { j.repeats = 1001; }), "invalid repeats = 1001: must be in [1, 1000]");
   EXPECT_EQ(
