@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <thread>
 
 #include <sched.h>
@@ -334,13 +335,17 @@ std::uint64_t parse_seed(std::string_view text) { return parse_uint64("seed", te
 
 namespace {
 
-/// A whole decimal count > 0, or 0.
-unsigned positive_count(std::string_view text) {
+/// The whole text as a decimal unsigned, or nothing.
+std::optional<unsigned> decimal(std::string_view text) {
   unsigned value = 0;
   const char* end = text.data() + text.size();
   const auto [next, error] = std::from_chars(text.data(), end, value);
-  return error == std::errc{} && next == end ? value : 0;
+  if (error != std::errc{} || next != end) return std::nullopt;
+  return value;
 }
+
+/// A whole decimal count > 0, or 0.
+unsigned positive_count(std::string_view text) { return decimal(text).value_or(0); }
 
 /// The CPUs this process may run on, or 0 where the mask cannot be read.
 unsigned affinity_cpus() {
@@ -377,13 +382,8 @@ unsigned local_processes() {
     if (const char* text = std::getenv(name)) return std::max(1u, positive_count(text));
   const char* tasks = std::getenv("SLURM_STEP_TASKS_PER_NODE");
   const char* node = std::getenv("SLURM_NODEID");
-  if (tasks && node && std::getenv("SLURM_STEP_ID")) {  // inside an srun step, not just an allocation
-    const std::string_view node_text(node);
-    unsigned index = 0;
-    const auto [next, error] = std::from_chars(node_text.data(), node_text.data() + node_text.size(), index);
-    if (error == std::errc{} && next == node_text.data() + node_text.size())
-      return std::max(1u, slurm_tasks_on_node(tasks, index));
-  }
+  if (tasks && node && std::getenv("SLURM_STEP_ID"))  // inside an srun step, not just an allocation
+    if (const std::optional<unsigned> index = decimal(node)) return std::max(1u, slurm_tasks_on_node(tasks, *index));
   return 1;
 }
 

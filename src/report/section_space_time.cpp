@@ -271,26 +271,23 @@ nlohmann::json time_assignment_numbers(const TimeAssignments& run, const std::ve
 
 /// The close-up drawn at the pictures' size (256×256 in the full report),
 /// first seed: the reference and the three assignments, the window where
-/// most pixels depend on time outlined and enlarged, and each render's
-/// error as a heat map. Returns its numbers.
+/// they disagree most outlined and enlarged, and each render's error as a
+/// heat map. Returns its numbers.
 nlohmann::json motion_picture(SectionContext& context, Section& section,
                               const std::vector<render::CompareConfig>& configs) {
   const RenderScale scale = picture_scale(context);
   const RenderedComparison run = run_comparison(close_up(scale), configs, scale.reference_spp, context.cache_dir());
   const std::size_t pixels = std::size_t(scale.width) * scale.height;
-  // Where the assignments disagree most: the band the sphere's silhouette
-  // sweeps (inside it a sample's time decides whether it sees the sphere).
+  // Where the assignments disagree most: where the sphere and its shadow
+  // move (there a sample's time decides what it sees).
   std::vector<double> disagreement(pixels, 0.0);
   for (std::size_t i = 1; i < run.images.size(); ++i) {
     const std::vector<double> difference = absolute_difference(run.images[i], run.images[0]);
     for (std::size_t p = 0; p < pixels; ++p) disagreement[p] += difference[p];
   }
   const Crop edge = heaviest_window(disagreement, scale.width, scale.height, 0.25, "where they differ most");
-  std::vector<GridColumn> columns{{&run.reference, fmt::format("reference ({} spp)", run.reference_spp)}};
-  for (std::size_t i = 0; i < run.rows.size(); ++i)
-    columns.push_back({&run.images[i], fmt::format("{}\nMSE {}", configs[i].label, format_number(run.rows[i].mse))});
   section.figures.push_back(image_figure(
-      context, picture_grid(columns, {edge}, &run.reference, "|error| against the reference"), "motion-picture",
+      context, comparison_grid(run, {edge}), "motion-picture",
       fmt::format(
           "The close-up of the moving sphere at {}×{} pixels, {} samples per pixel (first seed): the "
           "reference, random time, Cook's pattern and the magic square; below, the window where the assignments "
