@@ -4,7 +4,8 @@
 # seconds of REPEATS runs of each (default 3, alternating) and the
 # speedup against the one-process run of the same build (that the outputs
 # are identical is the test tests/apps/mpi_runs.sh).
-#   [REPEATS=3] bash bench/mpi_scaling.sh build/release/bin/stratum [K=2]
+# ONLY=TEXT keeps the rows whose job names contain TEXT (e.g. ONLY=render).
+#   [REPEATS=3] [ONLY=TEXT] bash bench/mpi_scaling.sh build/release/bin/stratum [K=2]
 set -euo pipefail
 stratum=$1 k=${2:-2} repeats=${REPEATS:-3}
 tmp=$(mktemp -d)
@@ -22,6 +23,7 @@ seconds() {  # seconds OUTPUT command...: wall time of one run
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 row() {  # row NAME args...: the median of REPEATS runs of each, alternating one process and K ranks
   local name=$1; shift
+  [[ "$name" == *"${ONLY:-}"* ]] || return 0
   local ones=() manys=() one many r
   for ((r = 0; r < repeats; ++r)); do  # @CACHE@: a fresh folder per run (a render's reference is not reused)
     ones+=("$(seconds "$tmp/one" "$stratum" "${@//@CACHE@/$tmp/cache-one-$r}")")

@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(cmake ninja-build g++ git libboost-dev libboost-math-dev libtbb-dev libfmt-dev nlohmann-json3-dev
   libcli11-dev libgtest-dev libbenchmark-dev python3-dev python3-numpy python3-scipy python3-pybind11
   pybind11-dev python3-pytest python3-matplotlib libembree-dev libopenimageio-dev
-  libopenmpi-dev openmpi-bin libkissfft-dev)
+  libpng-dev libopenexr-dev libopenmpi-dev openmpi-bin libkissfft-dev)
 if [ "${1:-}" = --test ]; then packages+=(chromium chromium-driver python3-selenium python3-dask clang libclang-rt-14-dev clang-format clang-tidy); fi
 missing=()
 for p in "${packages[@]}"; do

@@ -9,8 +9,11 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
+#include <utility>
 
+#include "image_codecs.hpp"
 #include "image_plugin.hpp"
 #include "stratum/analysis/image_spectrum.hpp"
 #include "stratum/distributed.hpp"
@@ -139,7 +142,8 @@ double relative_mean_squared_error(const Image& image, const Image& reference) {
 }
 
 Image read_image(const std::string& path) {
-  const image_plugin::Pixels pixels = image_plugin::read(path, "image");
+  std::optional<image_plugin::Pixels> direct = image_codecs::read(path);  // PNG and EXR as stratum writes them
+  const image_plugin::Pixels pixels = direct ? std::move(*direct) : image_plugin::read(path, "image");
   Image image;
   image.width = pixels.width;
   image.height = pixels.height;

@@ -1,5 +1,6 @@
-/// Images through OpenImageIO (loaded on first use: image_plugin.hpp):
-/// linear EXR, or 8-bit sRGB for other formats.
+/// Images: PNG and OpenEXR directly (image_codecs.hpp), every other format
+/// through OpenImageIO (loaded on first use: image_plugin.hpp); linear EXR
+/// (and HDR), 8-bit sRGB for other formats.
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "image_codecs.hpp"
 #include "image_plugin.hpp"
 #include "stratum/io/output_file.hpp"
 #include "stratum/render/compare.hpp"
@@ -53,11 +55,18 @@ void write_image(const Image& image, io::OutputFile& file) {
   }
   // The staging file has the target's extension: OpenImageIO picks the format by it.
   try {
-    if (linear) image_plugin::write(file.staging(), image.width, image.height, floats.data());
+    if (extension == ".exr") image_codecs::write_exr(file.staging(), image.width, image.height, floats.data());
+    else if (extension == ".png") image_codecs::write_png(file.staging(), image.width, image.height, bytes.data());
+    else if (linear) image_plugin::write(file.staging(), image.width, image.height, floats.data());
     else image_plugin::write(file.staging(), image.width, image.height, bytes.data());
   } catch (const std::runtime_error& e) {
+    const std::string staging = file.staging();
     file.discard();
-    throw invalid_argument(file.argument(), file.path(), std::string("could not be written: ") + e.what());
+    std::string why = e.what();  // the library's words, about the target rather than the staging file
+    for (auto at = why.find(staging); !staging.empty() && at != std::string::npos;
+         at = why.find(staging, at + file.path().size()))
+      why.replace(at, staging.size(), file.path());
+    throw invalid_argument(file.argument(), file.path(), "could not be written: " + why);
   }
   file.check_staged();
   // Read back: a file cut short (a full disk that a library did not report)
@@ -83,9 +92,9 @@ void write_image(const Image& image, const std::string& path) {
 }
 
 void check_image_path(const std::string& argument, const std::string& path) {
-  bool known = false;
+  bool known = image_codecs::writes(lowercase_extension(path));
   try {
-    known = image_plugin::writable(path);
+    known = known || image_plugin::writable(path);
   } catch (const std::runtime_error& e) {  // the module did not load
     throw invalid_argument(argument, path, std::string("cannot be written: ") + e.what());
   }
