@@ -35,10 +35,15 @@ cmake --install build/release --prefix build/install >/dev/null
 cmake -S examples/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
 cmake --build build/consumer >/dev/null
 build/consumer/consumer
-echo "== the installed CLI, run through PATH from another folder, loads the installed OpenImageIO module"
+echo "== the installed CLI, run through PATH from another folder, loads the installed OpenImageIO module for a TIFF"
+echo "   (and no module for a PNG, which libpng writes)"
+(cd / && PATH="$OLDPWD/build/install/bin:$PATH" LD_DEBUG=files \
+  stratum render --width 8 --height 8 --spp 1 -q -o "$OLDPWD/build/install/check.tif") 2>build/install/ld.log
+grep -q "file=$PWD/build/install/lib.*/stratum/libstratum_oiio.so" build/install/ld.log
+[ -s build/install/check.tif ]
 (cd / && PATH="$OLDPWD/build/install/bin:$PATH" LD_DEBUG=files \
   stratum render --width 8 --height 8 --spp 1 -q -o "$OLDPWD/build/install/check.png") 2>build/install/ld.log
-grep -q "file=$PWD/build/install/lib.*/stratum/libstratum_oiio.so" build/install/ld.log
+! grep -q "libstratum_oiio.so" build/install/ld.log
 [ -s build/install/check.png ]
 
 echo "== sanitizers (ASan + UBSan)"
