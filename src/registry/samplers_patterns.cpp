@@ -8,6 +8,7 @@
 #include "families.hpp"
 #include "stratum/patterns/grid.hpp"
 #include "stratum/patterns/jittered.hpp"
+#include "stratum/patterns/keyed_pairs.hpp"
 #include "stratum/patterns/latin_hypercube.hpp"
 #include "stratum/patterns/latin_square.hpp"
 #include "stratum/patterns/multi_jittered.hpp"
@@ -174,6 +175,7 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(random_pattern),
       .bind = bind_rotated(random_pattern),
+      .keyed_pairs = keyed_under<RandomPairs>(Randomizer::none),
   });
 
   const Param strata_schema =
@@ -212,6 +214,7 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(jittered_pattern),
       .bind = bind_rotated(jittered_pattern),
+      .keyed_pairs = keyed_under<JitteredPairs>(Randomizer::none),
   });
 
   list.push_back(latin_hypercube_entry(

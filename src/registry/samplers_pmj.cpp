@@ -5,6 +5,7 @@
 
 #include "families.hpp"
 #include "stratum/memory.hpp"
+#include "stratum/patterns/keyed_pairs.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/sequences/pmj02bn.hpp"
 #include "support.hpp"
@@ -38,6 +39,7 @@ std::vector<SamplerInfo> pmj() {
       .count = requested_count,
       .generate = generate_rotated(pmj02_of),
       .bind = bind_rotated(pmj02_of),
+      .keyed_pairs = keyed_under<Pmj02Pairs>(Randomizer::none),
   });
 
   list.push_back({

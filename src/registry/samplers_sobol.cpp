@@ -25,6 +25,7 @@
 #endif
 
 #include "families.hpp"
+#include "stratum/patterns/keyed_pairs.hpp"
 #include "stratum/randomizers/base2.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
 #include "stratum/sequences/sobol.hpp"
@@ -510,6 +511,7 @@ std::vector<SamplerInfo> sobol() {
       .count = requested_count,
       .generate = generate_sobol,  // the block walk (bulk); bind draws one point at a time
       .bind = bind_sobol,
+      .keyed_pairs = keyed_under<SobolOwenHashPairs>(Randomizer::owen_hash),
   });
 
   list.push_back({

@@ -98,6 +98,16 @@ auto bind_rotated(Make make) {
   return [make](const SamplerRequest& request) { return rotated_generator(request, make(request)); };
 }
 
+/// SamplerInfo::keyed_pairs of a sampler whose 2D sets are `Pairs`
+/// (patterns/keyed_pairs.hpp, included where this is used) under `randomizer`.
+template <class Pairs, class Keyed = KeyedPairs>  // Keyed: complete only where this is used
+auto keyed_under(Randomizer randomizer) {
+  return [randomizer](Randomizer asked) -> std::optional<Keyed> {
+    if (asked != randomizer) return std::nullopt;
+    return Keyed{Pairs{}};
+  };
+}
+
 /// SamplerInfo::count for samplers that return exactly the requested n.
 inline std::optional<std::uint64_t> requested_count(const SamplerRequest& request) { return request.n; }
 

@@ -16,11 +16,6 @@
 
 namespace stratum::render {
 
-const Sobol& PixelSampler::sobol_2d() {
-  static const Sobol sobol(2);
-  return sobol;
-}
-
 namespace {
 constexpr std::uint64_t tag_pixel = 0x5049'5845'4cULL;  // random-stream tags
 constexpr std::uint64_t tag_time = 0x5449'4d45ULL;
@@ -73,15 +68,11 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   arrays_continue_ = info.flags.progressive;
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   const Randomizer randomizer = r.empty() ? info.randomization.default_randomizer : parse_randomizer(r);
-  if (name == "random" && randomizer == Randomizer::none) fast_ = Fast::random;
-  if (name == "sobol" && randomizer == Randomizer::owen_hash) fast_ = Fast::sobol_owen_hash;
-  if (name == "jittered" && randomizer == Randomizer::none) fast_ = Fast::jittered;
-  if (name == "pmj02" && randomizer == Randomizer::none) fast_ = Fast::pmj02;
+  if (info.keyed_pairs) keyed_ = info.keyed_pairs(randomizer);
   halton_permute_ = name == "halton" && randomizer == Randomizer::permute;
   has_spacetime_ = !spacetime_.empty();
-  if (fast_ == Fast::sobol_owen_hash) sobol_ = &sobol_2d();
   halton_direct_ = halton_permute_ && offset_ + settings_.spp <= halton_direct_max;
-  bound_ = static_cast<bool>(info.bind) && fast_ == Fast::none && !halton_permute_;
+  bound_ = static_cast<bool>(info.bind) && !keyed_ && !halton_permute_;
   if (halton_permute_)
     for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
   spp_root_ = integer_root(settings_.spp, 2);
@@ -93,7 +84,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
-  fast_ = other.fast_, sobol_ = other.sobol_, halton_permute_ = other.halton_permute_;
+  keyed_ = other.keyed_, halton_permute_ = other.halton_permute_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_, bound_ = other.bound_;
   halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
   halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
@@ -155,13 +146,6 @@ std::array<double, 2> PixelSampler::halton_point(const HaltonSet& set, std::uint
   return point;
 }
 
-bool PixelSampler::direct_for(std::uint64_t n) const noexcept {
-  if (fast_ == Fast::none) return false;
-  if (fast_ != Fast::jittered) return true;
-  const std::uint64_t k = integer_root(n, 2);
-  return k * k == n;  // otherwise the registry names the bad count
-}
-
 PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
                             std::uint64_t start) const {
   // Direct paths, bit-identical to the registry's (tested): the registry call
@@ -177,9 +161,9 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
       }
       return points;
     };
-    if (direct_for(n)) {
-      const std::uint64_t root = integer_root(n, 2);
-      return set_of([&](std::uint64_t i) { return direct_point(seed, root, i); });
+    if (const std::uint64_t root = integer_root(n, 2); direct_for(n, root)) {  // else the registry names the bad count
+      const PairKey key = set_key(seed);
+      return set_of([&](std::uint64_t i) { return keyed_point<2>(key, root, i); });
     }
     if (halton_permute_ && start + n <= halton_direct_max) {
       HaltonSet set;

@@ -15,8 +15,13 @@ namespace stratum {
 
 class Jittered {
  public:
-  Jittered(StrataShape shape, std::uint64_t seed)
-      : shape_(std::move(shape)), key_(hash64(seed, 0x4a49545445524544ULL)) {}
+  Jittered(StrataShape shape, std::uint64_t seed) : shape_(std::move(shape)), key_(key_of(seed)) {}
+
+  /// The key of a seed's offsets: the offset of point i in dimension j is
+  /// uniform01(key_of(seed), i, j).
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t key_of(std::uint64_t seed) noexcept {
+    return hash64(seed, 0x4a49545445524544ULL);
+  }
 
   const StrataShape& shape() const noexcept { return shape_; }
   std::uint64_t count() const noexcept { return shape_.count(); }

@@ -243,8 +243,13 @@ class HashOwenScrambler {
   static constexpr unsigned cached_dimensions = 16;
 
   STRATUM_HOST_DEVICE explicit constexpr HashOwenScrambler(std::uint64_t seed) noexcept
-      : base_(hash64(seed, 0x6f68617368ULL /* "ohash" */)),
-        cache_(bind_first(base_, std::make_index_sequence<cached_dimensions>{})) {}
+      : base_(base_key(seed)), cache_(bind_first(base_, std::make_index_sequence<cached_dimensions>{})) {}
+
+  /// The key of dimension `dim` under `seed`, alone: dimension(dim) of
+  /// HashOwenScrambler(seed) is Dimension(dimension_key(seed, dim)).
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t dimension_key(std::uint64_t seed, unsigned dim) noexcept {
+    return base2_detail::dimension_key(base_key(seed), dim);
+  }
 
   STRATUM_HOST_DEVICE constexpr Dimension dimension(unsigned dim) const noexcept {
     return dim < cached_dimensions ? cache_[dim] : Dimension(base2_detail::dimension_key(base_, dim));
@@ -254,6 +259,9 @@ class HashOwenScrambler {
   }
 
  private:
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t base_key(std::uint64_t seed) noexcept {
+    return hash64(seed, 0x6f68617368ULL /* "ohash" */);
+  }
   template <std::size_t... dims>
   STRATUM_HOST_DEVICE static constexpr std::array<Dimension, sizeof...(dims)> bind_first(
       std::uint64_t base, std::index_sequence<dims...>) noexcept {

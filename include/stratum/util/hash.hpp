@@ -53,6 +53,16 @@ STRATUM_HOST_DEVICE constexpr Real uniform01(std::uint64_t seed, Counters... cou
   else return bits_to_double(bits);
 }
 
+/// uniform01(seed, index, 0) and, where coordinates is 2, uniform01(seed,
+/// index, 1), from m = hash64(seed): three mixes for the pair instead of
+/// eight (hash64 is a chain: hash64_extend), for per-pixel draws.
+template <int coordinates = 2>
+STRATUM_HOST_DEVICE constexpr void uniform01_pair(std::uint64_t m, std::uint64_t index, double* out) noexcept {
+  const std::uint64_t t = hash64_extend(m, index);
+  out[0] = bits_to_double(hash64_extend(t, 0));
+  if constexpr (coordinates == 2) out[1] = bits_to_double(hash64_extend(t, 1));
+}
+
 /// Unbiased integer in [0, bound) for (seed, counters): Lemire's multiply-shift
 /// with rejection (Lemire 2019, "Fast random integer generation in an interval"),
 /// drawing further words from the same counter stream when it rejects.

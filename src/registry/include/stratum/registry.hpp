@@ -21,6 +21,8 @@
 
 namespace stratum {
 
+struct KeyedPairs;  // stratum/patterns/keyed_pairs.hpp
+
 /// Every randomizer as a value: a generator switches on it once (one
 /// switch per construction), the faces spell it by randomizer_name.
 enum class Randomizer { none, owen, owen_hash, xor_shift, lms, permute, cp };
@@ -161,6 +163,10 @@ struct SamplerInfo {
   /// patterns whose points are computed alone once the set is built):
   /// without `generate`, the registry fills sets from it.
   std::function<PointGenerator(const SamplerRequest&)> bind{};
+  /// Its 2D sets under a randomizer as keyed pairs (patterns/keyed_pairs.hpp:
+  /// points from a key of the seed, no setup per set), where it has them,
+  /// else nullopt: how the renderer draws a set per pixel and dimension.
+  std::function<std::optional<KeyedPairs>(Randomizer)> keyed_pairs{};
   /// The accepted values of --randomize, front() the default: derived from
   /// `randomization` when the registry is built (accepted_randomizers).
   std::vector<std::string> randomizers{};

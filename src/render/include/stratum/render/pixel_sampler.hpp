@@ -41,10 +41,11 @@
 /// spacetime-<pattern> (spp = m² strata, one time slot each); without one,
 /// time is one more dimension of the sampler.
 ///
-/// Direct paths: for random, sobol (owen-hash), jittered and pmj02 (their
-/// default randomizers) a draw computes point `index` of the set straight
-/// from the index-addressable core generators (sequences/, patterns/): no
-/// registry call, no allocation, bit-identical to the registry's set (tested).
+/// Direct paths: where the registry gives a sampler's sets under its
+/// randomizer as keyed pairs (SamplerInfo::keyed_pairs: random, jittered,
+/// pmj02 and sobol:owen-hash today; patterns/keyed_pairs.hpp), a draw computes
+/// point `index` of the set from a key of its seed: no registry call, no
+/// allocation, no choice by name, bit-identical to the registry's set (tested).
 /// The seed hashing a pixel's draws share (pixel key, per-dimension seeds,
 /// the array seeds' prefix) is done once per pixel. halton (its default
 /// permute) builds, per pixel and dimension and per shadow-ray array, only
@@ -57,13 +58,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
-#include "stratum/patterns/strata.hpp"
-#include "stratum/randomizers/base2.hpp"
+#include "stratum/patterns/keyed_pairs.hpp"
 #include "stratum/registry.hpp"
-#include "stratum/sequences/pmj.hpp"
-#include "stratum/sequences/sobol.hpp"
 #include "stratum/sequences/ranked_blue_noise.hpp"
 #include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/hash.hpp"
@@ -97,13 +96,13 @@ class PixelSampler {
   // The draws: the direct paths inline (a few per camera ray, where a call
   // and a switch cost as much as the hashing), the others out of line.
   double get_1d() {
-    if (fast_ != Fast::none) return keyed_point<1>(dimension_key(dimension_++), spp_root_, sequence_index_)[0];
+    if (keyed_) return keyed_point<1>(dimension_key(dimension_++), spp_root_, sequence_index_)[0];
     if (zsobol_) return zsobol_point(dimension_++)[0];
     if (ranked_bn_) return ranked_bn_point(dimension_++)[0];
     return get_2d_slow(1)[0];
   }
   std::array<double, 2> get_2d() {
-    if (fast_ != Fast::none) return keyed_point<2>(dimension_key(dimension_++), spp_root_, sequence_index_);
+    if (keyed_) return keyed_point<2>(dimension_key(dimension_++), spp_root_, sequence_index_);
     if (zsobol_) return zsobol_point(dimension_++);
     if (ranked_bn_) return ranked_bn_point(dimension_++);
     return get_2d_slow();
@@ -125,18 +124,13 @@ class PixelSampler {
         hash64_extend(array_prefix(dimension_++), arrays_continue_ ? tag_continued : sequence_index_);
     const std::uint64_t start = arrays_continue_ ? sequence_index_ * n : 0;  // < 2^64: both factors < 2^32
     if (n != array_n_) array_n_ = n, array_root_ = integer_root(n, 2);
-    switch (fast_) {
-      case Fast::random:
-        return keyed_points<Fast::random>(set_key(seed), array_root_, start, n, out);
-      case Fast::sobol_owen_hash:
-        return keyed_points<Fast::sobol_owen_hash>(set_key(seed), array_root_, start, n, out);
-      case Fast::jittered:
-        if (array_root_ * array_root_ != n) break;  // the registry names the bad count
-        return keyed_points<Fast::jittered>(set_key(seed), array_root_, start, n, out);
-      case Fast::pmj02:
-        return keyed_points<Fast::pmj02>(set_key(seed), array_root_, start, n, out);
-      case Fast::none:
-        break;
+    if (keyed_ && direct_for(n, array_root_)) {  // else the registry names the bad count
+      const PairKey key = set_key(seed);
+      return std::visit(
+          [&](const auto& pairs) {
+            for (std::uint32_t i = 0; i < n; ++i) out[i] = pairs.template point<2>(key, array_root_, start + i);
+          },
+          keyed_->pairs);
     }
     get_2d_array_slow(seed, dimension_ - 1, n, start, out);
   }
@@ -156,7 +150,7 @@ class PixelSampler {
   /// The last link of a progressive sampler's array seeds: above 2^32, so no sample index equals it.
   static constexpr std::uint64_t tag_continued = 0x434f'4e54'494e'5545ULL;
   /// Whether draws take the direct path (see above).
-  bool direct() const noexcept { return fast_ != Fast::none; }
+  bool direct() const noexcept { return keyed_.has_value(); }
 
   std::uint32_t samples_per_pixel() const noexcept { return settings_.spp; }
   const PixelSamplerSettings& settings() const noexcept { return settings_; }
@@ -263,92 +257,25 @@ class PixelSampler {
   // The seed hashing a pixel's draws share is done once per pixel (or per
   // set) with hash64_extend (util/hash.hpp): the pixel key's hash, a
   // dimension's set key, the array seeds' (tag, dimension) prefix.
-  /// uniform01(seed, index, 0) and (if coordinates == 2) uniform01(seed, index, 1), from m = hash64(seed).
-  template <int coordinates>
-  static std::array<double, 2> uniform_pair(std::uint64_t m, std::uint64_t index) noexcept {
-    const std::uint64_t t = hash64_extend(m, index);
-    const double x = bits_to_double(hash64_extend(t, 0));
-    if constexpr (coordinates == 1) return {x, 0.0};
-    else return {x, bits_to_double(hash64_extend(t, 1))};
-  }
-  /// Sobol' (0,2)-sequence tables, shared by every pixel sampler.
-  static const Sobol& sobol_2d();
-
-  enum class Fast { none, random, sobol_owen_hash, jittered, pmj02 };
-  /// The key Jittered (patterns/jittered.hpp) derives from its seed.
-  static constexpr std::uint64_t tag_jittered = 0x4a49545445524544ULL;
   static constexpr std::uint64_t tag_array = 0x4152'5241'59ULL;  ///< get_2d_array's random-stream tag
 
-  /// The part of a direct path's points that depends on the set's seed alone.
-  struct SetKey {
-    std::uint64_t a = 0, b = 0;
-  };
-  SetKey set_key(std::uint64_t seed) const noexcept {
-    if (fast_ == Fast::random) return {hash64(seed)};                          // RandomPattern: uniform01(seed, ·, ·)
-    if (fast_ == Fast::jittered) return {hash64(hash64(seed, tag_jittered))};  // Jittered: uniform01(key, ·, ·)
-    if (fast_ == Fast::sobol_owen_hash) {  // HashOwenScrambler(seed)'s scramblers of dimensions 0 and 1
-      const std::uint64_t base = hash64(seed, 0x6f68617368ULL /* "ohash" */);
-      return {base2_detail::dimension_key(base, 0), base2_detail::dimension_key(base, 1)};
-    }
-    if (fast_ == Fast::pmj02) return {Pmj02::digit_key(seed, 0), Pmj02::digit_key(seed, 1)};
-    return {seed};
-  }
-  /// Point `index` of the n-point 2D set that draw(settings_.sampler, n, 2,
-  /// seed) returns, computed alone from key = set_key(seed) (direct paths
-  /// only; jittered needs n = k² and takes k = root, computed once per count
-  /// rather than per point); `coordinates` 1 computes only the first.
-  template <Fast kind, int coordinates>
-  std::array<double, 2> kind_point(SetKey key, std::uint64_t root, std::uint64_t index) const noexcept {
-    if constexpr (kind == Fast::random) {
-      return uniform_pair<coordinates>(key.a, index);
-    } else if constexpr (kind == Fast::sobol_owen_hash) {
-      const double x = sobol_->sample(index, 0, HashOwenScrambler::Dimension(key.a));
-      if constexpr (coordinates == 1) return {x, 0.0};
-      else return {x, sobol_->sample(index, 1, HashOwenScrambler::Dimension(key.b))};
-    } else if constexpr (kind == Fast::jittered) {
-      // Jittered(StrataShape::equal(n, 2), seed).sample(index, ·) without the
-      // shape's vectors: cell (index mod k, index div k) of the k × k grid.
-      const std::uint64_t k = root;
-      const auto u = uniform_pair<coordinates>(key.a, index);
-      const double x = cell_coordinate<double>(index % k, u[0], k);
-      if constexpr (coordinates == 1) return {x, 0.0};
-      else return {x, cell_coordinate<double>((index / k) % k, u[1], k)};
-    } else {
-      static_assert(kind == Fast::pmj02);  // Pmj02(2, seed)'s pair 0, from its digit keys
-      const double x = bits_to_double(Pmj02::keyed_bits(index, 0, key.a));
-      if constexpr (coordinates == 1) return {x, 0.0};
-      else return {x, bits_to_double(Pmj02::keyed_bits(index, 1, key.b))};
-    }
+  /// The sampler's sets as keyed pairs (patterns/keyed_pairs.hpp), where the
+  /// registry gives them for its randomizer: the direct path. Point `index`
+  /// of the 2D set of seed s is keyed_point(set_key(s), ⌊√n⌋, index).
+  std::optional<KeyedPairs> keyed_;
+  PairKey set_key(std::uint64_t seed) const noexcept {
+    return std::visit([seed](const auto& pairs) { return pairs.key(seed); }, keyed_->pairs);
   }
   template <int coordinates>
-  std::array<double, 2> keyed_point(SetKey key, std::uint64_t root, std::uint64_t index) const noexcept {
-    switch (fast_) {
-      case Fast::random:
-        return kind_point<Fast::random, coordinates>(key, root, index);
-      case Fast::sobol_owen_hash:
-        return kind_point<Fast::sobol_owen_hash, coordinates>(key, root, index);
-      case Fast::jittered:
-        return kind_point<Fast::jittered, coordinates>(key, root, index);
-      case Fast::pmj02:
-        return kind_point<Fast::pmj02, coordinates>(key, root, index);
-      case Fast::none:
-        break;
-    }
-    return {0, 0};
-  }
-  template <Fast kind>
-  void keyed_points(SetKey key, std::uint64_t root, std::uint64_t start, std::uint32_t n,
-                    std::array<double, 2>* out) const noexcept {
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = kind_point<kind, 2>(key, root, start + i);
-  }
-  std::array<double, 2> direct_point(std::uint64_t seed, std::uint64_t root, std::uint64_t index) const noexcept {
-    return keyed_point<2>(set_key(seed), root, index);
+  std::array<double, 2> keyed_point(PairKey key, std::uint64_t root, std::uint64_t index) const noexcept {
+    return std::visit([&](const auto& pairs) { return pairs.template point<coordinates>(key, root, index); },
+                      keyed_->pairs);
   }
   /// set_key of this pixel's get_2d set `dimension`, seed hash64(pixel_key_, dimension) (cached per pixel).
-  SetKey dimension_key(std::uint32_t dimension) noexcept {
+  PairKey dimension_key(std::uint32_t dimension) noexcept {
     const std::uint32_t bit = dimension < cached_dimensions ? 1u << dimension : 0u;
     if (dimension_valid_ & bit) return dimension_keys_[dimension];
-    const SetKey key = set_key(hash64_extend(pixel_mix_, dimension));
+    const PairKey key = set_key(hash64_extend(pixel_mix_, dimension));
     if (bit) dimension_keys_[dimension] = key, dimension_valid_ |= bit;
     return key;
   }
@@ -360,11 +287,12 @@ class PixelSampler {
     if (bit) array_prefixes_[dimension] = prefix, array_valid_ |= bit;
     return prefix;
   }
-  /// Whether the direct path can produce an n-point set.
-  bool direct_for(std::uint64_t n) const noexcept;
+  /// Whether the direct path can produce an n-point set (root = ⌊√n⌋).
+  bool direct_for(std::uint64_t n, std::uint64_t root) const noexcept {
+    return keyed_ && std::visit([&](const auto& pairs) { return pairs.takes(n, root); }, keyed_->pairs);
+  }
 
   PixelSamplerSettings settings_;
-  Fast fast_ = Fast::none;        ///< a direct path for the common samplers
   bool halton_permute_ = false;   ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
   bool arrays_continue_ = false;  ///< a progressive sampler: get_2d_array continues the pixel's sequence (above)
   unsigned sampler_dims_ = 2;     ///< the dimensions of the sampler's sets (2, or its smallest: latin-square's 3)
@@ -379,8 +307,7 @@ class PixelSampler {
   static constexpr std::uint32_t cached_dimensions = 32;
   std::uint64_t pixel_mix_ = 0, array_mix_ = 0;
   std::uint32_t dimension_valid_ = 0, array_valid_ = 0;
-  std::array<SetKey, cached_dimensions> dimension_keys_{};
-  const Sobol* sobol_ = nullptr;  ///< sobol_2d() on the sobol path
+  std::array<PairKey, cached_dimensions> dimension_keys_{};
   std::array<std::uint64_t, cached_dimensions> array_prefixes_{};
   std::uint64_t spp_root_ = 0;    ///< ⌊√spp⌋ (jittered's strata per axis)
   std::uint32_t array_n_ = 0;     ///< the last get_2d_array count …
