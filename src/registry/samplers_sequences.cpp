@@ -31,6 +31,7 @@
 #include "stratum/randomizers/digital_shift_base_b.hpp"
 #include "stratum/randomizers/owen_base_b.hpp"
 #include "stratum/sequences/faure.hpp"
+#include "stratum/registry/halton_pair_tables.hpp"
 #include "stratum/sequences/halton.hpp"
 #include "stratum/sequences/radical_inverse.hpp"
 #include "support.hpp"
@@ -252,6 +253,10 @@ std::vector<SamplerInfo> sequences() {
       .count = requested_count,
       .generate = generate_halton,  // column fills of the tabulated scramblers
       .bind = bind_halton,
+      .pair_tables = [](Randomizer randomizer) -> std::optional<HaltonPairTables> {
+        if (randomizer != Randomizer::permute) return std::nullopt;
+        return HaltonPairTables();
+      },
   });
 
   list.push_back({

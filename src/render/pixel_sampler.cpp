@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <bit>
 
-#include "halton_digits.hpp"
-
 #include "stratum/patterns/random.hpp"
 #include "stratum/patterns/strata.hpp"
-#include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
@@ -69,12 +66,10 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   const Randomizer randomizer = r.empty() ? info.randomization.default_randomizer : parse_randomizer(r);
   if (info.keyed_pairs) keyed_ = info.keyed_pairs(randomizer);
-  halton_permute_ = name == "halton" && randomizer == Randomizer::permute;
+  if (info.pair_tables) tables_ = info.pair_tables(randomizer);
   has_spacetime_ = !spacetime_.empty();
-  halton_direct_ = halton_permute_ && offset_ + settings_.spp <= halton_direct_max;
-  bound_ = static_cast<bool>(info.bind) && !keyed_ && !halton_permute_;
-  if (halton_permute_)
-    for (unsigned c = 0; c < 2; ++c) halton_weights_[c] = digits_detail::digit_weights(c == 0 ? 2 : 3);
+  tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
+  bound_ = static_cast<bool>(info.bind) && !keyed_ && !tables_;
   spp_root_ = integer_root(settings_.spp, 2);
   if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, seed_);
   for (BlueNoiseBase base : {BlueNoiseBase::sobol, BlueNoiseBase::pmj02, BlueNoiseBase::lattice})
@@ -84,66 +79,13 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
-  keyed_ = other.keyed_, halton_permute_ = other.halton_permute_;
+  keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_, bound_ = other.bound_;
-  halton_direct_ = other.halton_direct_, halton_weights_[0] = other.halton_weights_[0];
-  halton_weights_[1] = other.halton_weights_[1], spacetime_ = other.spacetime_;
+  spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
   seed_ = other.seed_, offset_ = other.offset_;
   zsobol_ = other.zsobol_, zsobol_pairs_ = other.zsobol_pairs_;
   ranked_bn_ = other.ranked_bn_, ranked_bn_shared_ = other.ranked_bn_shared_;
-}
-
-void PixelSampler::build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set,
-                                    unsigned coordinates) const noexcept {
-  using u128 = unsigned __int128;
-  // K(b) and m(b) of digits.hpp for bases 2 and 3, as constants.
-  static constexpr unsigned positions_of[2] = {digits_detail::digit_count(2), digits_detail::digit_count(3)};
-  static constexpr unsigned chunk_of[2] = {digits_detail::chunk_digits(2), digits_detail::chunk_digits(3)};
-  static_assert(positions_of[0] <= 64 && positions_of[1] <= 64);  // halton_zero_images' array below
-  const digits_detail::ShuffledPermutationRule rule(seed);        // RandomDigitPermutations' permutations
-  for (unsigned c = 0; c < coordinates; ++c) {
-    const std::uint32_t base = c + 2;
-    const unsigned positions = positions_of[c], chunk = chunk_of[c];
-    const u128* weight = halton_weights_[c].data();
-    unsigned used = 0;  // positions where some index < n has a non-zero digit (≤ chunk, as n ≤ base^chunk)
-    for (std::uint64_t r = n - 1; r != 0; r /= base) ++used;
-    std::uint32_t images[3];
-    for (unsigned j = 0; j < used; ++j) {
-      rule.permutation(c, j, base, images);
-      for (std::uint32_t a = 0; a < base; ++a) set.low[c][j][a] = std::uint64_t{images[a]} * weight[j];
-    }
-    // Past the used positions every index has digit 0: π_j(0)·W_j, summed in
-    // 128 bits per chunk (the rest of the first chunk kept whole, each later
-    // chunk truncated to its top 64 bits, as digits.hpp's tables do).
-    std::uint8_t zero[64];  // π_j(0), read for j ≥ used
-    halton_zero_images(rule.dimension_key(c), base, zero);
-    const auto sum_of = [&](unsigned from, unsigned to) {  // Σ π_j(0)·W_j over from ≤ j < to
-      u128 sum = 0;
-      for (unsigned j = from; j < to; ++j) sum += std::uint64_t{zero[j]} * weight[j];
-      return sum;
-    };
-    std::uint64_t tail = 0;
-    for (unsigned start = chunk; start < positions; start += chunk)
-      tail += static_cast<std::uint64_t>(sum_of(start, std::min(start + chunk, positions)) >> 64);
-    set.first_chunk_rest[c] = sum_of(used, chunk);
-    set.tail[c] = tail;
-    set.positions[c] = used;
-  }
-  set.coordinates = coordinates;
-}
-
-std::array<double, 2> PixelSampler::halton_point(const HaltonSet& set, std::uint64_t index) noexcept {
-  std::array<double, 2> point{0.0, 0.0};
-  for (unsigned c = 0; c < set.coordinates; ++c) {
-    const std::uint32_t base = c == 0 ? 2 : 3;
-    unsigned __int128 sum = set.first_chunk_rest[c];
-    std::uint64_t rest = index;
-    for (unsigned j = 0; j < set.positions[c]; ++j) sum += set.low[c][j][rest % base], rest /= base;
-    const std::uint64_t fraction = static_cast<std::uint64_t>(sum >> 64) + set.tail[c];
-    point[c] = to_unit<double>(digits_detail::fraction_to_double(fraction));
-  }
-  return point;
 }
 
 PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
@@ -165,17 +107,10 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
       const PairKey key = set_key(seed);
       return set_of([&](std::uint64_t i) { return keyed_point<2>(key, root, i); });
     }
-    if (halton_permute_ && start + n <= halton_direct_max) {
-      HaltonSet set;
-      build_halton_set(seed, start + n, set);
-      return set_of([&](std::uint64_t i) { return halton_point(set, i); });
-    }
-    if (halton_permute_) {
-      // The registry's scrambler for these bases and indices, without its
-      // request handling: each point straight from RandomDigitPermutations
-      // (sample() equals the registry's tabulated fill bit for bit).
-      const RandomDigitPermutations permutations(seed, {2, 3}, start + n - 1);
-      return set_of([&](std::uint64_t i) { return std::array{permutations.sample(i, 0), permutations.sample(i, 1)}; });
+    if (tables_) {
+      std::vector<std::array<double, 2>> points(n);
+      tables_->fill(seed, start, n, points.data());
+      return set_of([&](std::uint64_t i) { return points[i - start]; });
     }
   }
   if (sampler == settings_.sampler) {
@@ -202,7 +137,7 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
     dimension_valid_ = array_valid_ = 0;
     for (auto& set : sets_) set.n = 0;  // stale: redrawn on first use
     for (auto& generator : generators_) generator = {};
-    for (auto& set : halton_sets_) set.coordinates = 0;
+    for (auto& set : table_sets_) set.coordinates = 0;
     if (!spacetime_.empty()) {
       // A frame's own time pattern also where the pixel key is every frame's (progressive samplers).
       const std::uint64_t time_seed =
@@ -285,13 +220,13 @@ const RankedBlueNoise::PixelPair& PixelSampler::ranked_bn_pair_miss(std::uint32_
 }
 
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
-  if (halton_direct_) {
+  if (tables_direct_) {
     const std::uint32_t dimension = dimension_++;
-    if (halton_sets_.size() <= dimension) halton_sets_.resize(dimension + 1);
-    HaltonSet& set = halton_sets_[dimension];
+    if (table_sets_.size() <= dimension) table_sets_.resize(dimension + 1);
+    HaltonPairTables::Set& set = table_sets_[dimension];
     if (set.coordinates < coordinates)
-      build_halton_set(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
-    return halton_point(set, sequence_index_);
+      tables_->build(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
+    return HaltonPairTables::point(set, sequence_index_);
   }
   if (bound_) {
     const PointGenerator& generator = generator_for(dimension_++);
@@ -314,25 +249,20 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = ranked_bn_->array_point(sequence_index_, n, i, pair);
     return;
   }
-  if (halton_permute_ && arrays_continue_ && (offset_ + settings_.spp) * n <= halton_direct_max) {
+  if (tables_ && arrays_continue_ && (offset_ + settings_.spp) * n <= HaltonPairTables::max_points) {
     // Every sample of the pixel reads the same continued set (its seed ends
     // in tag_continued): built once per pixel and array dimension, for all
     // the pixel's arrays, instead of once per sample.
-    if (halton_array_sets_.size() <= dimension) halton_array_sets_.resize(dimension + 1);
-    HaltonArraySet& cached = halton_array_sets_[dimension];
+    if (table_array_sets_.size() <= dimension) table_array_sets_.resize(dimension + 1);
+    TableArraySet& cached = table_array_sets_[dimension];
     if (cached.stamp != pixel_stamp_ || cached.n != n) {
-      build_halton_set(seed, (offset_ + settings_.spp) * n, cached.set);
+      tables_->build(seed, (offset_ + settings_.spp) * n, cached.set);
       cached.stamp = pixel_stamp_, cached.n = n;
     }
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(cached.set, start + i);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = HaltonPairTables::point(cached.set, start + i);
     return;
   }
-  if (halton_permute_ && start + n <= halton_direct_max) {
-    HaltonSet set;
-    build_halton_set(seed, start + n, set);
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = halton_point(set, start + i);
-    return;
-  }
+  if (tables_) return tables_->fill(seed, start, n, out);
   if (bound_) {
     const PointGenerator generator = bind_set(seed, n, start);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};

@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "render/halton_digits.hpp"
 #include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/render/pixel_sampler.hpp"
 #include "stratum/util/error.hpp"
@@ -221,40 +220,6 @@ TEST(PixelSampler, HaltonSetsEqualTheRegistry) {
           ASSERT_EQ(drawn.data[i], reference.data[i]) << randomize << " " << n << " " << i;
       }
   }
-}
-
-/// The halton sets' digit-0 images, computed without branches or 128-bit
-/// products, against the permutation rule's image() at every position of
-/// both bases, by both copies (the double comparison above cannot see
-/// positions past the 53rd bit), and ⌊3h/2^64⌋ against the 128-bit product at its thresholds.
-TEST(PixelSampler, HaltonZeroImagesEqualTheRule) {
-  using u128 = unsigned __int128;
-  for (std::uint64_t h :
-       {0ull, 1ull, 0x5555555555555555ull, 0x5555555555555556ull, 0xAAAAAAAAAAAAAAAAull, 0xAAAAAAAAAAAAAAABull, ~0ull})
-    EXPECT_EQ(high_of_three_times(h), std::uint32_t((u128{h} * 3) >> 64)) << h;
-  for (std::uint64_t i = 0; i < 100000; ++i) {
-    const std::uint64_t h = hash64(i);
-    ASSERT_EQ(high_of_three_times(h), std::uint32_t((u128{h} * 3) >> 64)) << h;
-  }
-  std::uint32_t moved[2] = {0, 0};
-  for (std::uint64_t seed = 0; seed < 200; ++seed) {
-    const digits_detail::ShuffledPermutationRule rule(seed);
-    for (unsigned dim = 0; dim < 2; ++dim) {
-      const std::uint32_t base = dim + 2;
-      const unsigned positions = digits_detail::digit_count(base);
-      std::uint8_t zero[64] = {}, portable[64] = {};
-      halton_zero_images(rule.dimension_key(dim), base, zero);
-      halton_zero_images_portable(rule.dimension_key(dim), base, portable);
-      for (unsigned j = 0; j < positions; ++j) {
-        ASSERT_EQ(zero[j], rule.image(dim, j, base, 0)) << seed << " " << dim << " " << j;
-        ASSERT_EQ(portable[j], rule.image(dim, j, base, 0)) << seed << " " << dim << " " << j;
-        moved[dim] += zero[j] != 0;
-      }
-    }
-  }
-  EXPECT_GT(moved[0], 0u);  // the images are not all 0 (or the test would pass for an identity rule)
-  EXPECT_GT(moved[1], 0u);
-  if (!halton_zero_images_vectorized()) GTEST_LOG_(INFO) << "no AVX-512DQ here: only the portable copy was tested";
 }
 
 TEST(PixelSampler, EverySamplerDrivesTheRendererOrIsRefusedWithTheReason) {

@@ -21,7 +21,8 @@
 
 namespace stratum {
 
-struct KeyedPairs;  // stratum/patterns/keyed_pairs.hpp
+struct KeyedPairs;       // stratum/patterns/keyed_pairs.hpp
+class HaltonPairTables;  // stratum/registry/halton_pair_tables.hpp
 
 /// Every randomizer as a value: a generator switches on it once (one
 /// switch per construction), the faces spell it by randomizer_name.
@@ -167,6 +168,9 @@ struct SamplerInfo {
   /// points from a key of the seed, no setup per set), where it has them,
   /// else nullopt: how the renderer draws a set per pixel and dimension.
   std::function<std::optional<KeyedPairs>(Randomizer)> keyed_pairs{};
+  /// Its 2D sets (default parameters) under a randomizer built per seed into
+  /// small tables (halton under permute: HaltonPairTables), else nullopt.
+  std::function<std::optional<HaltonPairTables>(Randomizer)> pair_tables{};
   /// The accepted values of --randomize, front() the default: derived from
   /// `randomization` when the registry is built (accepted_randomizers).
   std::vector<std::string> randomizers{};

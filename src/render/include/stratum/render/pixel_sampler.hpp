@@ -47,10 +47,12 @@
 /// point `index` of the set from a key of its seed: no registry call, no
 /// allocation, no choice by name, bit-identical to the registry's set (tested).
 /// The seed hashing a pixel's draws share (pixel key, per-dimension seeds,
-/// the array seeds' prefix) is done once per pixel. halton (its default
-/// permute) builds, per pixel and dimension and per shadow-ray array, only
-/// the digit permutations its points use, without tables or allocation
-/// (bit-identical to the registry's RandomDigitPermutations; spp and array
+/// the array seeds' prefix) is done once per pixel. Where the registry gives
+/// a sampler's sets as small per-seed tables (SamplerInfo::pair_tables:
+/// halton under its default permute; registry/halton_pair_tables.hpp), the
+/// pixel sampler builds per pixel and dimension, and per shadow-ray array,
+/// only the digit permutations its points use, without allocation
+/// (bit-identical to RandomDigitPermutations; spp and array
 /// counts ≤ 2187, above which it builds RandomDigitPermutations). Other
 /// samplers draw each set through the registry once per pixel and dimension
 /// and cache it.
@@ -63,6 +65,7 @@
 
 #include "stratum/patterns/keyed_pairs.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/registry/halton_pair_tables.hpp"
 #include "stratum/sequences/ranked_blue_noise.hpp"
 #include "stratum/sequences/zsobol.hpp"
 #include "stratum/util/hash.hpp"
@@ -171,7 +174,8 @@ class PixelSampler {
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
                 std::uint64_t start = 0) const;
-  /// get_2d off the direct, zsobol and ranked paths (halton, registry sets); `coordinates` 1: only the first is used.
+  /// get_2d off the direct, zsobol and ranked paths (pair tables, registry sets); `coordinates` 1: only the first is
+  /// used.
   std::array<double, 2> get_2d_slow(unsigned coordinates = 2);
   void get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension, std::uint32_t n, std::uint64_t start,
                          std::array<double, 2>* out);
@@ -225,38 +229,20 @@ class PixelSampler {
     return ranked_bn_->point(sequence_index_, ranked_bn_pair(dimension));
   }
 
-  /// halton (permute) without RandomDigitPermutations' tables: what point i < n
-  /// of the set RandomDigitPermutations(seed, {2, 3}, n − 1) needs, for
-  /// n ≤ halton_direct_max (indices whose digits all lie in the first chunk
-  /// of both bases, 3^7 = 2187): per coordinate, π_j(a)·W_j for the positions
-  /// j < positions that indices < n use, the 128-bit sum of the rest of the
-  /// first chunk (digits 0) and the truncated sums of the later chunks.
-  /// Built without allocation from the same permutation rule (bit-identical;
-  /// tested against the registry).
-  static constexpr std::uint64_t halton_direct_max = 2187;
-  struct HaltonSet {
-    std::array<std::array<std::array<unsigned __int128, 3>, 12>, 2> low;  ///< [coordinate][position < 12][digit]
-    std::array<unsigned __int128, 2> first_chunk_rest{};
-    std::array<std::uint64_t, 2> tail{};
-    std::array<unsigned, 2> positions{};
-    unsigned coordinates = 0;  ///< how many coordinates are built (0: none, stale)
-  };
-  void build_halton_set(std::uint64_t seed, std::uint64_t n, HaltonSet& set, unsigned coordinates = 2) const noexcept;
-  /// Point `index` of a built set (its first `set.coordinates` coordinates; the others 0).
-  static std::array<double, 2> halton_point(const HaltonSet& set, std::uint64_t index) noexcept;
-  bool halton_direct_ = false;          ///< halton_permute_ and offset_ + spp ≤ halton_direct_max
-  std::vector<HaltonSet> halton_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
-  struct HaltonArraySet {
-    HaltonSet set;
+  /// Sets built per seed into small tables (SamplerInfo::pair_tables: halton
+  /// under permute), where the registry gives them: per pixel and dimension
+  /// (and per shadow-ray array dimension, for all the pixel's samples) the
+  /// table of the points the pixel uses, up to HaltonPairTables::max_points.
+  std::optional<HaltonPairTables> tables_;
+  bool tables_direct_ = false;                     ///< tables_ and offset_ + spp ≤ max_points
+  std::vector<HaltonPairTables::Set> table_sets_;  ///< this pixel's get_2d sets, by dimension (cache)
+  struct TableArraySet {
+    HaltonPairTables::Set set;
     std::uint64_t stamp = 0;  ///< the pixel it was built for (pixel_stamp_)
     std::uint32_t n = 0;      ///< points per array
   };
-  std::vector<HaltonArraySet> halton_array_sets_;     ///< this pixel's continued get_2d_array sets, by dimension
-  std::vector<unsigned __int128> halton_weights_[2];  ///< W_j of bases 2 and 3 (digits.hpp)
+  std::vector<TableArraySet> table_array_sets_;  ///< this pixel's continued get_2d_array sets, by dimension
 
-  // The seed hashing a pixel's draws share is done once per pixel (or per
-  // set) with hash64_extend (util/hash.hpp): the pixel key's hash, a
-  // dimension's set key, the array seeds' (tag, dimension) prefix.
   static constexpr std::uint64_t tag_array = 0x4152'5241'59ULL;  ///< get_2d_array's random-stream tag
 
   /// The sampler's sets as keyed pairs (patterns/keyed_pairs.hpp), where the
@@ -293,7 +279,6 @@ class PixelSampler {
   }
 
   PixelSamplerSettings settings_;
-  bool halton_permute_ = false;   ///< halton's sets built by RandomDigitPermutations directly (cached as other sets)
   bool arrays_continue_ = false;  ///< a progressive sampler: get_2d_array continues the pixel's sequence (above)
   unsigned sampler_dims_ = 2;     ///< the dimensions of the sampler's sets (2, or its smallest: latin-square's 3)
   std::string spacetime_;         ///< the space-time sampler, or empty

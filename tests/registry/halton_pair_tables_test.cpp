@@ -1,0 +1,89 @@
+// Halton's first two dimensions under permute in small per-seed tables
+// (registry/halton_pair_tables.hpp) against the registry's sets, which
+// come from RandomDigitPermutations' full tables.
+#include "stratum/registry/halton_pair_tables.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "stratum/randomizers/digit_permutation.hpp"
+#include "stratum/registry.hpp"
+#include "stratum/util/hash.hpp"
+
+using namespace stratum;
+
+TEST(HaltonPairTables, FillEqualsTheRegistrysSetsOnBothSidesOfTheTableLimit) {
+  const HaltonPairTables tables;
+  for (const std::uint64_t n : {1ull, 2ull, 3ull, 16ull, 81ull, 100ull, 2187ull, 2188ull})
+    for (const std::uint64_t start : {0ull, 7ull})
+      for (const std::uint64_t seed : {0ull, 12345ull, 0xdeadbeefcafeull}) {
+        SamplerRequest request;
+        request.n = n, request.d = 2, request.seed = seed, request.start = start;  // halton's default: permute
+        const PointSet reference = generate_points("halton", request);
+        std::vector<std::array<double, 2>> points(n);
+        tables.fill(seed, start, n, points.data());
+        for (std::uint64_t i = 0; i < n; ++i) {
+          ASSERT_EQ(points[i][0], reference(i, 0)) << n << " " << start << " " << seed << " " << i;
+          ASSERT_EQ(points[i][1], reference(i, 1)) << n << " " << start << " " << seed << " " << i;
+        }
+      }
+}
+
+TEST(HaltonPairTables, OneCoordinateBuildsTheFirstAlone) {
+  const HaltonPairTables tables;
+  HaltonPairTables::Set both, first;
+  tables.build(99, 64, both);
+  tables.build(99, 64, first, 1);
+  for (std::uint64_t i = 0; i < 64; ++i) {
+    EXPECT_EQ(HaltonPairTables::point(first, i)[0], HaltonPairTables::point(both, i)[0]);
+    EXPECT_EQ(HaltonPairTables::point(first, i)[1], 0.0);
+  }
+}
+
+TEST(HaltonPairTables, TheRegistryOffersThemForHaltonUnderPermuteOnly) {
+  const SamplerInfo& halton = find_sampler("halton");
+  ASSERT_TRUE(halton.pair_tables);
+  EXPECT_TRUE(halton.pair_tables(Randomizer::permute).has_value());
+  EXPECT_FALSE(halton.pair_tables(Randomizer::owen).has_value());
+  int offered = 0;
+  for (const SamplerInfo& info : samplers()) offered += static_cast<bool>(info.pair_tables);
+  EXPECT_EQ(offered, 1);
+}
+
+/// The tables' digit-0 images, computed without branches or 128-bit
+/// products, against the permutation rule's image() at every position of
+/// both bases, by both copies (the comparison of points cannot see
+/// positions past the 53rd bit), and ⌊3h/2^64⌋ against the 128-bit product at its thresholds.
+TEST(HaltonPairTables, ZeroImagesEqualTheRule) {
+  using u128 = unsigned __int128;
+  for (std::uint64_t h :
+       {0ull, 1ull, 0x5555555555555555ull, 0x5555555555555556ull, 0xAAAAAAAAAAAAAAAAull, 0xAAAAAAAAAAAAAAABull, ~0ull})
+    EXPECT_EQ(HaltonPairTables::high_of_three_times(h), std::uint32_t((u128{h} * 3) >> 64)) << h;
+  for (std::uint64_t i = 0; i < 100000; ++i) {
+    const std::uint64_t h = hash64(i);
+    ASSERT_EQ(HaltonPairTables::high_of_three_times(h), std::uint32_t((u128{h} * 3) >> 64)) << h;
+  }
+  std::uint32_t moved[2] = {0, 0};
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    const digits_detail::ShuffledPermutationRule rule(seed);
+    for (unsigned dim = 0; dim < 2; ++dim) {
+      const std::uint32_t base = dim + 2;
+      const unsigned positions = digits_detail::digit_count(base);
+      std::uint8_t zero[64] = {}, portable[64] = {};
+      HaltonPairTables::zero_images(rule.dimension_key(dim), base, zero);
+      HaltonPairTables::zero_images_portable(rule.dimension_key(dim), base, portable);
+      for (unsigned j = 0; j < positions; ++j) {
+        ASSERT_EQ(zero[j], rule.image(dim, j, base, 0)) << seed << " " << dim << " " << j;
+        ASSERT_EQ(portable[j], rule.image(dim, j, base, 0)) << seed << " " << dim << " " << j;
+        moved[dim] += zero[j] != 0;
+      }
+    }
+  }
+  EXPECT_GT(moved[0], 0u);  // the images are not all 0 (or the test would pass for an identity rule)
+  EXPECT_GT(moved[1], 0u);
+  if (!HaltonPairTables::zero_images_vectorized())
+    GTEST_LOG_(INFO) << "no AVX-512DQ here: only the portable copy was tested";
+}
