@@ -95,6 +95,8 @@ SamplerInfo ranked_entry(const RankedEntry& e) {
           },
       .count = requested_count,
       .generate = [base](const SamplerRequest& request) { return generate_ranked(request, base); },
+      .ranked_image = [base](std::uint64_t spp,
+                             std::uint64_t seed) { return RankedBlueNoise(default_blue_noise_table(base), spp, seed); },
   };
 }
 

@@ -532,6 +532,8 @@ std::vector<SamplerInfo> sobol() {
       .validate = [](const SamplerRequest& request) { zsobol_from(request); },
       .count = requested_count,
       .generate = generate_zsobol,
+      .zsobol_image = [](std::uint32_t resolution, std::uint64_t spp,
+                         std::uint64_t seed) { return ZSobol(resolution, spp, seed); },
   });
 
   list.push_back({

@@ -71,10 +71,8 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
   bound_ = static_cast<bool>(info.bind) && !keyed_ && !tables_;
   spp_root_ = integer_root(settings_.spp, 2);
-  if (name == "zsobol") zsobol_.emplace(std::max(1u, settings_.resolution), settings_.spp, seed_);
-  for (BlueNoiseBase base : {BlueNoiseBase::sobol, BlueNoiseBase::pmj02, BlueNoiseBase::lattice})
-    if (name == std::string(blue_noise_base_name(base)) + "-bn")
-      ranked_bn_.emplace(default_blue_noise_table(base), settings_.spp, seed_);
+  if (info.zsobol_image) zsobol_.emplace(info.zsobol_image(std::max(1u, settings_.resolution), settings_.spp, seed_));
+  if (info.ranked_image) ranked_bn_.emplace(info.ranked_image(settings_.spp, seed_));
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {

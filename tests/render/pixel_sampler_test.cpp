@@ -284,6 +284,21 @@ TEST(PixelSampler, EverySamplerDrivesTheRendererOrIsRefusedWithTheReason) {
   EXPECT_TRUE(one_per_stratum(points, 4));
 }
 
+TEST(PixelSampler, ScreenSpaceSamplersComeFromTheRegistrysHooks) {
+  // The pixel samplers whose start continues the pixel's sequence (zsobol,
+  // the ranked blue-noise samplers) are drawn through the image sampler the
+  // registry gives (SamplerInfo::zsobol_image or ranked_image), never chosen
+  // by name: a new one without its hook would be drawn as a set per pixel.
+  int screen = 0;
+  for (const SamplerInfo& info : samplers()) {
+    const bool hooked = static_cast<bool>(info.zsobol_image) || static_cast<bool>(info.ranked_image);
+    EXPECT_EQ(hooked, info.flags.frames_continue) << info.name;
+    EXPECT_FALSE(info.zsobol_image && info.ranked_image) << info.name;
+    screen += hooked;
+  }
+  EXPECT_EQ(screen, 4);
+}
+
 TEST(PixelSampler, OtherSamplersGoThroughTheRegistry) {
   EXPECT_FALSE(PixelSampler(settings("halton", 16)).direct());
   PixelSamplerSettings owen = settings("sobol", 16);

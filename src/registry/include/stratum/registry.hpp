@@ -23,6 +23,8 @@ namespace stratum {
 
 struct KeyedPairs;       // stratum/patterns/keyed_pairs.hpp
 class HaltonPairTables;  // stratum/registry/halton_pair_tables.hpp
+class ZSobol;            // stratum/sequences/zsobol.hpp
+class RankedBlueNoise;   // stratum/sequences/ranked_blue_noise.hpp
 
 /// Every randomizer as a value: a generator switches on it once (one
 /// switch per construction), the faces spell it by randomizer_name.
@@ -171,6 +173,12 @@ struct SamplerInfo {
   /// Its 2D sets (default parameters) under a randomizer built per seed into
   /// small tables (halton under permute: HaltonPairTables), else nullopt.
   std::function<std::optional<HaltonPairTables>(Randomizer)> pair_tables{};
+  /// A screen-space pixel sampler's image sampler (its draws need the pixel,
+  /// not a set per pixel): zsobol's Morton-ordered sequence for an image whose
+  /// larger side is `resolution`, or a ranked blue-noise sampler over its
+  /// committed tile, for spp samples a pixel and a seed. Absent elsewhere.
+  std::function<ZSobol(std::uint32_t resolution, std::uint64_t spp, std::uint64_t seed)> zsobol_image{};
+  std::function<RankedBlueNoise(std::uint64_t spp, std::uint64_t seed)> ranked_image{};
   /// The accepted values of --randomize, front() the default: derived from
   /// `randomization` when the registry is built (accepted_randomizers).
   std::vector<std::string> randomizers{};
