@@ -114,18 +114,21 @@ std::array<double, 2> HaltonPairTables::point(const Set& set, std::uint64_t inde
   return point;
 }
 
-void HaltonPairTables::fill(std::uint64_t seed, std::uint64_t start, std::uint64_t n,
-                            std::array<double, 2>* out) const {
+void HaltonPairTables::fill(std::uint64_t seed, std::uint64_t start, std::uint64_t n, double* out) const {
   if (start + n <= max_points) {
     Set set;
     build(seed, start + n, set);
-    for (std::uint64_t i = 0; i < n; ++i) out[i] = point(set, start + i);
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const std::array<double, 2> p = point(set, start + i);
+      out[2 * i] = p[0], out[2 * i + 1] = p[1];
+    }
     return;
   }
   // The registry's scrambler for these bases and indices, without its
   // request handling: each point straight from RandomDigitPermutations.
   const RandomDigitPermutations permutations(seed, {2, 3}, start + n - 1);
-  for (std::uint64_t i = 0; i < n; ++i) out[i] = {permutations.sample(start + i, 0), permutations.sample(start + i, 1)};
+  for (std::uint64_t i = 0; i < n; ++i)
+    out[2 * i] = permutations.sample(start + i, 0), out[2 * i + 1] = permutations.sample(start + i, 1);
 }
 
 }  // namespace stratum

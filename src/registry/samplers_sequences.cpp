@@ -145,6 +145,14 @@ static PointSet generate_halton(const SamplerRequest& request) {
   const std::uint64_t n = *request.n, start = request.start;
   const unsigned d = request.d;
   const std::vector<std::uint32_t> bases = halton_bases(request);
+  if (request.randomizer == Randomizer::permute && bases == std::vector<std::uint32_t>{2, 3} &&
+      start + n <= HaltonPairTables::max_points) {
+    // The engine for small 2D sets: the permutations the n points use, not
+    // RandomDigitPermutations' tables (equal bit for bit: halton_pair_tables_test).
+    PointSet points{n, 2, std::make_unique<double[]>(2 * n)};
+    HaltonPairTables().fill(request.seed, start, n, points.data.get());
+    return points;
+  }
   auto scrambled = with_digit_scrambler(request, bases, start + n - 1, [&](const auto& scrambler) {
     return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
       fill_scrambled(scrambler, start + row, rows, j, out, d);

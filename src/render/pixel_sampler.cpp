@@ -106,9 +106,9 @@ PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigne
       return set_of([&](std::uint64_t i) { return keyed_point<2>(key, root, i); });
     }
     if (tables_) {
-      std::vector<std::array<double, 2>> points(n);
-      tables_->fill(seed, start, n, points.data());
-      return set_of([&](std::uint64_t i) { return points[i - start]; });
+      PointSet points{n, 2, std::make_unique<double[]>(n * 2)};
+      tables_->fill(seed, start, n, points.data.get());
+      return points;
     }
   }
   if (sampler == settings_.sampler) {
@@ -260,7 +260,12 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = HaltonPairTables::point(cached.set, start + i);
     return;
   }
-  if (tables_) return tables_->fill(seed, start, n, out);
+  if (tables_) {  // a set per sample (a frame whose arrays pass max_points)
+    std::vector<double> points(2 * std::size_t{n});
+    tables_->fill(seed, start, n, points.data());
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = {points[2 * i], points[2 * i + 1]};
+    return;
+  }
   if (bound_) {
     const PointGenerator generator = bind_set(seed, n, start);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};

@@ -15,21 +15,37 @@
 
 using namespace stratum;
 
-TEST(HaltonPairTables, FillEqualsTheRegistrysSetsOnBothSidesOfTheTableLimit) {
+TEST(HaltonPairTables, FillEqualsRandomDigitPermutationsOnBothSidesOfTheTableLimit) {
   const HaltonPairTables tables;
   for (const std::uint64_t n : {1ull, 2ull, 3ull, 16ull, 81ull, 100ull, 2187ull, 2188ull})
     for (const std::uint64_t start : {0ull, 7ull})
       for (const std::uint64_t seed : {0ull, 12345ull, 0xdeadbeefcafeull}) {
-        SamplerRequest request;
-        request.n = n, request.d = 2, request.seed = seed, request.start = start;  // halton's default: permute
-        const PointSet reference = generate_points("halton", request);
-        std::vector<std::array<double, 2>> points(n);
+        // The oracle: the full tables, built for these bases and indices.
+        const RandomDigitPermutations permutations(seed, {2, 3}, start + n - 1);
+        std::vector<double> points(2 * n);
         tables.fill(seed, start, n, points.data());
         for (std::uint64_t i = 0; i < n; ++i) {
-          ASSERT_EQ(points[i][0], reference(i, 0)) << n << " " << start << " " << seed << " " << i;
-          ASSERT_EQ(points[i][1], reference(i, 1)) << n << " " << start << " " << seed << " " << i;
+          ASSERT_EQ(points[2 * i], permutations.sample(start + i, 0)) << n << " " << start << " " << seed << " " << i;
+          ASSERT_EQ(points[2 * i + 1], permutations.sample(start + i, 1)) << n << " " << start << " " << seed;
         }
       }
+}
+
+TEST(HaltonPairTables, TheRegistrysSmallSetsAreTheTablesAndEqualItsLargeOnes) {
+  // d = 2 and start + n <= max_points: the registry fills from the tables;
+  // d = 3 (bases 2, 3, 5) from RandomDigitPermutations, whose first two
+  // coordinates are the same permutations.
+  for (const std::uint64_t n : {5ull, 2000ull}) {
+    SamplerRequest request;
+    request.n = n, request.d = 2, request.seed = 77, request.start = 3;
+    const PointSet pair = generate_points("halton", request);
+    request.d = 3;
+    const PointSet triple = generate_points("halton", request);
+    for (std::uint64_t i = 0; i < n; ++i) {
+      ASSERT_EQ(pair(i, 0), triple(i, 0)) << n << " " << i;
+      ASSERT_EQ(pair(i, 1), triple(i, 1)) << n << " " << i;
+    }
+  }
 }
 
 TEST(HaltonPairTables, OneCoordinateBuildsTheFirstAlone) {

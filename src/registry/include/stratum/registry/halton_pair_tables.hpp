@@ -11,7 +11,8 @@
 /// without allocation from RandomDigitPermutations' permutation rule and
 /// equal to its points bit for bit (tests/registry/halton_pair_tables_test.cpp).
 /// fill() covers every n: the table up to max_points, RandomDigitPermutations above.
-/// The registry offers it where it applies (SamplerInfo::pair_tables).
+/// The registry offers it where it applies (SamplerInfo::pair_tables) and
+/// fills halton's small 2D sets under permute with it.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -35,8 +36,8 @@ class HaltonPairTables {
   void build(std::uint64_t seed, std::uint64_t n, Set& set, unsigned coordinates = 2) const noexcept;
   /// Point `index` (< the n it was built for) of a built set (coordinates not built: 0).
   static std::array<double, 2> point(const Set& set, std::uint64_t index) noexcept;
-  /// Points start … start + n − 1 of the set of `seed`, into out.
-  void fill(std::uint64_t seed, std::uint64_t start, std::uint64_t n, std::array<double, 2>* out) const;
+  /// Points start … start + n − 1 of the set of `seed`, into out[2i], out[2i + 1].
+  void fill(std::uint64_t seed, std::uint64_t start, std::uint64_t n, double* out) const;
 
   /// π_j(0) for positions j < 64 (base 2) or j < 48 (base 3) of one
   /// dimension, from its dimension key (most of build()'s time: ≈ 100
