@@ -1,4 +1,5 @@
 #include "stratum/registry.hpp"
+#include "stratum/registry/generator_binder.hpp"
 
 #include "stratum/memory.hpp"
 
@@ -218,6 +219,19 @@ PointGenerator bind_generator(std::string_view name, const SamplerRequest& reque
   require(static_cast<bool>(sampler.bind), "sampler", sampler.name,
           "has no per-point generator: its points are made as a whole set (generate_points)");
   return sampler.bind(resolved_request(sampler, request));
+}
+
+GeneratorBinder::GeneratorBinder(std::string_view name, const SamplerRequest& request) : sampler_(&find_sampler(name)) {
+  require(static_cast<bool>(sampler_->bind), "sampler", sampler_->name,
+          "has no per-point generator: its points are made as a whole set (generate_points)");
+  require(request.n.has_value(), "n", "(none)", "a generator binder needs the set's n");
+  request_ = resolved_request(*sampler_, request);
+}
+
+PointGenerator GeneratorBinder::bind(std::uint64_t seed, std::uint64_t start) {
+  request_.seed = seed;
+  request_.start = start;
+  return sampler_->bind(request_);
 }
 
 PointSet generate_points(std::string_view name, const SamplerRequest& request) {

@@ -70,6 +70,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   has_spacetime_ = !spacetime_.empty();
   tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
   bound_ = static_cast<bool>(info.bind) && !keyed_ && !tables_;
+  if (bound_) set_binder_.emplace(name, set_request(seed_, settings_.spp, offset_));
   spp_root_ = integer_root(settings_.spp, 2);
   if (info.zsobol_image) zsobol_.emplace(info.zsobol_image(std::max(1u, settings_.resolution), settings_.spp, seed_));
   if (info.ranked_image) ranked_bn_.emplace(info.ranked_image(settings_.spp, seed_));
@@ -78,6 +79,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
   keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
+  set_binder_ = other.set_binder_, array_binder_ = other.array_binder_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_, bound_ = other.bound_;
   spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
@@ -165,14 +167,10 @@ SamplerRequest PixelSampler::set_request(std::uint64_t seed, std::uint64_t n, st
   return request;
 }
 
-PointGenerator PixelSampler::bind_set(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const {
-  return bind_generator(settings_.sampler, set_request(seed, n, start));
-}
-
 const PointGenerator& PixelSampler::generator_for(std::uint32_t dimension) {
   if (generators_.size() <= dimension) generators_.resize(dimension + 1);
   PointGenerator& generator = generators_[dimension];
-  if (!generator) generator = bind_set(hash64(pixel_key_, dimension), settings_.spp, offset_);
+  if (!generator) generator = set_binder_->bind(hash64(pixel_key_, dimension), offset_);
   return generator;
 }
 
@@ -267,7 +265,9 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     return;
   }
   if (bound_) {
-    const PointGenerator generator = bind_set(seed, n, start);
+    if (!array_binder_ || array_binder_->count() != n)
+      array_binder_.emplace(settings_.sampler, set_request(seed, n, start));
+    const PointGenerator generator = array_binder_->bind(seed, start);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;
   }

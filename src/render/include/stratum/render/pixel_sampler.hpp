@@ -65,6 +65,7 @@
 
 #include "stratum/patterns/keyed_pairs.hpp"
 #include "stratum/registry.hpp"
+#include "stratum/registry/generator_binder.hpp"
 #include "stratum/registry/halton_pair_tables.hpp"
 #include "stratum/sequences/ranked_blue_noise.hpp"
 #include "stratum/sequences/zsobol.hpp"
@@ -170,7 +171,9 @@ class PixelSampler {
   /// The request for `n` points from `start` of the pixel sampler's set with
   /// `seed` (its randomizer, its dimensions), and that set's generator.
   SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
-  PointGenerator bind_set(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
+  /// The generators' requests, validated once: the pixel sets' (n = spp),
+  /// and the shadow-ray arrays' for the last array count.
+  std::optional<GeneratorBinder> set_binder_, array_binder_;
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
                 std::uint64_t start = 0) const;
