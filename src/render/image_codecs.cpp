@@ -73,14 +73,6 @@ std::optional<image_plugin::Pixels> read_png(std::FILE* file) {
   return std::move(pixels);
 }
 
-std::optional<image_plugin::Pixels> read_png(const std::string& path) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) return std::nullopt;
-  std::optional<image_plugin::Pixels> pixels = read_png(file);
-  std::fclose(file);
-  return pixels;
-}
-
 /// The pixels of a single-part OpenEXR holding R, G, B (and maybe A) over its
 /// whole display window from (0, 0), in that channel order (OpenImageIO's).
 std::optional<image_plugin::Pixels> read_exr(const std::string& path) try {
@@ -159,8 +151,13 @@ std::optional<image_plugin::Pixels> read(const std::string& path) {
   unsigned char signature[8] = {};
   const bool png =
       std::fread(signature, 1, sizeof signature, file) == sizeof signature && png_sig_cmp(signature, 0, 8) == 0;
+  std::optional<image_plugin::Pixels> pixels;
+  if (png) {
+    std::rewind(file);  // libpng reads the signature again
+    pixels = read_png(file);
+  }
   std::fclose(file);
-  return png ? read_png(path) : read_exr(path);
+  return png ? std::move(pixels) : read_exr(path);
 }
 
 }  // namespace stratum::render::image_codecs

@@ -69,8 +69,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   if (info.pair_tables) tables_ = info.pair_tables(randomizer);
   has_spacetime_ = !spacetime_.empty();
   tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
-  bound_ = static_cast<bool>(info.bind) && !keyed_ && !tables_;
-  if (bound_) set_binder_.emplace(name, set_request(seed_, settings_.spp, offset_));
+  if (info.bind && !keyed_ && !tables_) set_binder_.emplace(name, set_request(seed_, settings_.spp, offset_));
   spp_root_ = integer_root(settings_.spp, 2);
   if (info.zsobol_image) zsobol_.emplace(info.zsobol_image(std::max(1u, settings_.resolution), settings_.spp, seed_));
   if (info.ranked_image) ranked_bn_.emplace(info.ranked_image(settings_.spp, seed_));
@@ -80,7 +79,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   // The validated choices and per-render constants; the caches start empty.
   keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
   set_binder_ = other.set_binder_, array_binder_ = other.array_binder_;
-  arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_, bound_ = other.bound_;
+  arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
   spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
   seed_ = other.seed_, offset_ = other.offset_;
@@ -224,7 +223,7 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
       tables_->build(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
     return HaltonPairTables::point(set, sequence_index_);
   }
-  if (bound_) {
+  if (set_binder_) {
     const PointGenerator& generator = generator_for(dimension_++);
     return {generator.sample(sequence_index_, 0), coordinates > 1 ? generator.sample(sequence_index_, 1) : 0.0};
   }
@@ -264,7 +263,7 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {points[2 * i], points[2 * i + 1]};
     return;
   }
-  if (bound_) {
+  if (set_binder_) {
     if (!array_binder_ || array_binder_->count() != n)
       array_binder_.emplace(settings_.sampler, set_request(seed, n, start));
     const PointGenerator generator = array_binder_->bind(seed, start);

@@ -5,7 +5,7 @@
 /// per pixel and dimension (pbrt-v4's samplers likewise reseed per pixel
 /// sample), so a set's setup, not its points, would dominate; each type
 /// here is its sampler's construction written keyed, bit for bit (tested
-/// against the registry's sets, tests/render/pixel_sampler_test.cpp):
+/// against the registry's sets, tests/patterns/keyed_pairs_test.cpp):
 /// - RandomPairs: RandomPattern(seed);
 /// - JitteredPairs: Jittered over a k × k grid (n = k²);
 /// - SobolOwenHashPairs: Sobol' dimensions 0 and 1 under HashOwenScrambler(seed);
@@ -59,11 +59,6 @@ struct JitteredPairs {
 };
 
 struct SobolOwenHashPairs {
-  /// Sobol' tables of dimensions 0 and 1, shared.
-  static const Sobol& tables() {
-    static const Sobol sobol(2);
-    return sobol;
-  }
   static PairKey key(std::uint64_t seed) noexcept {
     return {HashOwenScrambler::dimension_key(seed, 0), HashOwenScrambler::dimension_key(seed, 1)};
   }
@@ -74,7 +69,7 @@ struct SobolOwenHashPairs {
     if constexpr (coordinates == 2) p[1] = sobol->sample(index, 1, HashOwenScrambler::Dimension(key.b));
     return p;
   }
-  const Sobol* sobol = &tables();
+  const Sobol* sobol = &Sobol::first_two();
 };
 
 struct Pmj02Pairs {

@@ -125,7 +125,7 @@ inline std::uint32_t blue_noise_max_dims(BlueNoiseBase base) noexcept {
 /// Owen-scramble keys (sobol), digit keys (pmj02) or shifts (lattice).
 class RankedBase {
  public:
-  explicit RankedBase(BlueNoiseBase base) : base_(base), sobol_(&sobol_2d()), pmj02_(&pmj02_tables()) {}
+  explicit RankedBase(BlueNoiseBase base) : base_(base), sobol_(&Sobol::first_two()), pmj02_(&pmj02_tables()) {}
   BlueNoiseBase base() const noexcept { return base_; }
 
   std::array<std::uint64_t, 2> bits(std::uint32_t pair, std::uint64_t sequence, std::uint64_t kx,
@@ -147,10 +147,6 @@ class RankedBase {
   }
 
  private:
-  static const Sobol& sobol_2d() {
-    static const Sobol sobol(2);
-    return sobol;
-  }
   /// Per coordinate, the XORs of the generator columns 0–7 and 8–15 of every
   /// byte value (as Sobol's tables): a 16-bit index is two look-ups.
   struct Pmj02Tables {

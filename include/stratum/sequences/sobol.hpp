@@ -124,6 +124,13 @@ class Sobol {
     const std::uint64_t* table_;
   };
 
+  /// The tables of dimensions 0 and 1 (gray order), built once and shared:
+  /// the (0,2)-sequence that per-pixel samplers draw from.
+  static const Sobol& first_two() {
+    static const Sobol sobol(2);
+    return sobol;
+  }
+
   explicit Sobol(unsigned dimensions, Order order = Order::gray) : dimensions_(dimensions), order_(order) {
     require(dimensions >= 1 && dimensions <= max_dimensions, "d", dimensions,
             "Sobol supports 1 to 21201 dimensions (the Joe-Kuo table new-joe-kuo-6.21201)");

@@ -59,7 +59,7 @@ class ZSobol {
   /// An image whose larger side is `resolution` pixels, spp samples per
   /// pixel (a power of 2), scrambled by `seed`.
   ZSobol(std::uint32_t resolution, std::uint64_t samples_per_pixel, std::uint64_t seed)
-      : seed_(seed), sobol_(&sobol_2d()) {
+      : seed_(seed), sobol_(&Sobol::first_two()) {
     require(resolution >= 1 && resolution <= max_resolution, "resolution", resolution,
             "must be in [1, 16384] (the image's larger side in pixels)");
     require(samples_per_pixel >= 1 && std::has_single_bit(samples_per_pixel) &&
@@ -221,10 +221,6 @@ class ZSobol {
       return all;
     }();
     return table;
-  }
-  static const Sobol& sobol_2d() {
-    static const Sobol sobol(2);
-    return sobol;
   }
 
   std::uint64_t seed_;

@@ -162,17 +162,17 @@ class PixelSampler {
  private:
   const PointSet& set_for(std::uint32_t dimension);
   /// A sampler with a per-point generator (SamplerInfo::bind) off the direct
-  /// paths draws through it: per pixel and dimension the generator bound to
-  /// the seed set_for would use, read at the sample's index (the same
-  /// points: the registry fills its sets from the generator or is tested equal to it).
-  bool bound_ = false;
+  /// paths draws through it (set_binder_ is set): per pixel and dimension the
+  /// generator bound to the seed set_for would use, read at the sample's index
+  /// (the same points: the registry fills its sets from the generator or is tested equal to it).
   std::vector<PointGenerator> generators_;  ///< this pixel's, by dimension (empty: not bound yet)
   const PointGenerator& generator_for(std::uint32_t dimension);
   /// The request for `n` points from `start` of the pixel sampler's set with
-  /// `seed` (its randomizer, its dimensions), and that set's generator.
+  /// `seed` (its randomizer, its dimensions).
   SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
-  /// The generators' requests, validated once: the pixel sets' (n = spp),
-  /// and the shadow-ray arrays' for the last array count.
+  /// The generators' requests, validated once: the pixel sets' (n = spp;
+  /// set where the sampler draws through its generator), and the shadow-ray
+  /// arrays' for the last array count.
   std::optional<GeneratorBinder> set_binder_, array_binder_;
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
