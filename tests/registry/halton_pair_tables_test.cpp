@@ -31,6 +31,24 @@ TEST(HaltonPairTables, FillEqualsRandomDigitPermutationsOnBothSidesOfTheTableLim
       }
 }
 
+TEST(HaltonPairTables, ManySeedsAtARenderersCounts) {
+  // The counts a renderer builds per pixel (spp, spp · shadow rays), over
+  // many seeds: each seed's permutations differ at every position.
+  const HaltonPairTables tables;
+  for (std::uint64_t s = 0; s < 300; ++s)
+    for (const std::uint64_t n : {4ull, 16ull, 64ull}) {
+      const std::uint64_t seed = hash64(s, n);
+      const RandomDigitPermutations permutations(seed, {2, 3}, n - 1);
+      HaltonPairTables::Set set;
+      tables.build(seed, n, set);
+      for (std::uint64_t i = 0; i < n; ++i) {
+        const std::array<double, 2> point = HaltonPairTables::point(set, i);
+        ASSERT_EQ(point[0], permutations.sample(i, 0)) << seed << " " << n << " " << i;
+        ASSERT_EQ(point[1], permutations.sample(i, 1)) << seed << " " << n << " " << i;
+      }
+    }
+}
+
 TEST(HaltonPairTables, TheRegistrysSmallSetsAreTheTablesAndEqualItsLargeOnes) {
   // d = 2 and start + n <= max_points: the registry fills from the tables;
   // d = 3 (bases 2, 3, 5) from RandomDigitPermutations, whose first two
@@ -85,17 +103,19 @@ TEST(HaltonPairTables, ZeroImagesEqualTheRule) {
   std::uint32_t moved[2] = {0, 0};
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
     const digits_detail::ShuffledPermutationRule rule(seed);
-    for (unsigned dim = 0; dim < 2; ++dim) {
-      const std::uint32_t base = dim + 2;
-      const unsigned positions = digits_detail::digit_count(base);
-      std::uint8_t zero[64] = {}, portable[64] = {};
-      HaltonPairTables::zero_images(rule.dimension_key(dim), base, zero);
-      HaltonPairTables::zero_images_portable(rule.dimension_key(dim), base, portable);
-      for (unsigned j = 0; j < positions; ++j) {
-        ASSERT_EQ(zero[j], rule.image(dim, j, base, 0)) << seed << " " << dim << " " << j;
-        ASSERT_EQ(portable[j], rule.image(dim, j, base, 0)) << seed << " " << dim << " " << j;
-        moved[dim] += zero[j] != 0;
-      }
+    const std::uint64_t bits = HaltonPairTables::zero_bits2(rule.dimension_key(0));
+    ASSERT_EQ(bits, HaltonPairTables::zero_bits2_portable(rule.dimension_key(0))) << seed;
+    for (unsigned j = 0; j < 64; ++j) {
+      ASSERT_EQ((bits >> (63 - j)) & 1, rule.image(0, j, 2, 0)) << seed << " " << j;
+      moved[0] += rule.image(0, j, 2, 0) != 0;
+    }
+    std::uint8_t zero[48] = {}, portable[48] = {};
+    HaltonPairTables::zero_images3(rule.dimension_key(1), zero);
+    HaltonPairTables::zero_images3_portable(rule.dimension_key(1), portable);
+    for (unsigned j = 0; j < digits_detail::digit_count(3); ++j) {
+      ASSERT_EQ(zero[j], rule.image(1, j, 3, 0)) << seed << " " << j;
+      ASSERT_EQ(portable[j], rule.image(1, j, 3, 0)) << seed << " " << j;
+      moved[1] += zero[j] != 0;
     }
   }
   EXPECT_GT(moved[0], 0u);  // the images are not all 0 (or the test would pass for an identity rule)
