@@ -214,15 +214,14 @@ const RankedBlueNoise::PixelPair& PixelSampler::ranked_bn_pair_miss(std::uint32_
   return ranked_bn_pixel_[dimension];
 }
 
+std::array<double, 2> PixelSampler::table_point_miss(std::uint32_t dimension, unsigned coordinates) {
+  if (table_sets_.size() <= dimension) table_sets_.resize(dimension + 1);
+  HaltonPairTables::Set& set = table_sets_[dimension];
+  tables_->build(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
+  return HaltonPairTables::point(set, sequence_index_);
+}
+
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
-  if (tables_direct_) {
-    const std::uint32_t dimension = dimension_++;
-    if (table_sets_.size() <= dimension) table_sets_.resize(dimension + 1);
-    HaltonPairTables::Set& set = table_sets_[dimension];
-    if (set.coordinates < coordinates)
-      tables_->build(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
-    return HaltonPairTables::point(set, sequence_index_);
-  }
   if (set_binder_) {
     const PointGenerator& generator = generator_for(dimension_++);
     return {generator.sample(sequence_index_, 0), coordinates > 1 ? generator.sample(sequence_index_, 1) : 0.0};

@@ -103,12 +103,14 @@ class PixelSampler {
     if (keyed_) return keyed_point<1>(dimension_key(dimension_++), spp_root_, sequence_index_)[0];
     if (zsobol_) return zsobol_point(dimension_++)[0];
     if (ranked_bn_) return ranked_bn_point(dimension_++)[0];
+    if (tables_direct_) return table_point(1)[0];
     return get_2d_slow(1)[0];
   }
   std::array<double, 2> get_2d() {
     if (keyed_) return keyed_point<2>(dimension_key(dimension_++), spp_root_, sequence_index_);
     if (zsobol_) return zsobol_point(dimension_++);
     if (ranked_bn_) return ranked_bn_point(dimension_++);
+    if (tables_direct_) return table_point(2);
     return get_2d_slow();
   }
   /// The film position within the pixel, in [0,1)².
@@ -123,6 +125,7 @@ class PixelSampler {
   }
   /// n points stratified among themselves (n must be a count the sampler takes).
   void get_2d_array(std::uint32_t n, std::array<double, 2>* out) {
+    if (tables_ && arrays_continue_ && continued_table_array(n, out)) return;  // this pixel's set, already built
     // seed = hash64(pixel_key_, tag_array, dimension, tag_continued or sequence_index_)
     const std::uint64_t seed =
         hash64_extend(array_prefix(dimension_++), arrays_continue_ ? tag_continued : sequence_index_);
@@ -245,6 +248,25 @@ class PixelSampler {
     std::uint32_t n = 0;      ///< points per array
   };
   std::vector<TableArraySet> table_array_sets_;  ///< this pixel's continued get_2d_array sets, by dimension
+  /// get_2d/get_1d's point from this pixel's table of the dimension (built on first use: table_point_miss).
+  std::array<double, 2> table_point(unsigned coordinates) {
+    const std::uint32_t dimension = dimension_++;
+    if (dimension < table_sets_.size() && table_sets_[dimension].coordinates >= coordinates) [[likely]]
+      return HaltonPairTables::point(table_sets_[dimension], sequence_index_);
+    return table_point_miss(dimension, coordinates);
+  }
+  std::array<double, 2> table_point_miss(std::uint32_t dimension, unsigned coordinates);
+  /// The n points of this sample's continued array from this pixel's built
+  /// set of the dimension, if built (true); false: nothing drawn, the caller builds it.
+  bool continued_table_array(std::uint32_t n, std::array<double, 2>* out) {
+    if (dimension_ >= table_array_sets_.size()) return false;
+    const TableArraySet& cached = table_array_sets_[dimension_];
+    if (cached.stamp != pixel_stamp_ || cached.n != n) return false;
+    ++dimension_;
+    const std::uint64_t start = sequence_index_ * n;
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = HaltonPairTables::point(cached.set, start + i);
+    return true;
+  }
 
   static constexpr std::uint64_t tag_array = 0x4152'5241'59ULL;  ///< get_2d_array's random-stream tag
 
