@@ -27,11 +27,19 @@ constexpr auto weight_times3 = [] {
   return table;
 }();
 
-// π_j(0) of ShuffledPermutationRule: digit 0 traced back through the swaps
-// i = 1 … b − 1 as the rule's image() does, without branches or 128-bit
-// products (j_1 = ⌊2h/2^64⌋ is h's top bit, j_2 = ⌊3h/2^64⌋ is
-// high_of_three_times(h)). Fixed trip counts (64 and 48, multiples of 8):
-// vectorized without remainder loops.
+// π_j(0)·W_j of base 3 by swap code (HaltonPairTables::code_permutations3).
+constexpr auto zero_weight3 = [] {
+  std::array<std::array<u128, 6>, positions3> table{};
+  for (unsigned j = 0; j < positions3; ++j)
+    for (unsigned code = 0; code < 6; ++code)
+      table[j][code] = weight_times3[j][HaltonPairTables::code_permutations3[code][0]];
+  return table;
+}();
+
+// The swaps of ShuffledPermutationRule without branches or 128-bit products
+// (j_1 = ⌊2h/2^64⌋ is h's top bit, j_2 = ⌊3h/2^64⌋ is high_of_three_times(h)),
+// in fixed trip counts (64 and 48, multiples of 8): vectorized without
+// remainder loops. Base 2: π_j(0), bit 63 − j of a word.
 [[gnu::always_inline]] inline std::uint64_t bits_of_zero2(std::uint64_t dimension_key) noexcept {
   std::uint64_t bits = 0;
   for (unsigned j = 0; j < 64; ++j) {  // digit 0 moves to 1 exactly when j_1 = 0
@@ -41,24 +49,25 @@ constexpr auto weight_times3 = [] {
   return bits;
 }
 
-[[gnu::always_inline]] inline void images_of_zero3(std::uint64_t dimension_key, std::uint8_t* out) noexcept {
+// The swaps of base 3's permutation at every position, as code j_1 + 2·j_2
+// (HaltonPairTables::code_permutations3 turns a code into the permutation).
+[[gnu::always_inline]] inline void swap_codes_of3(std::uint64_t dimension_key, std::uint64_t* out) noexcept {
   for (unsigned j = 0; j < 48; ++j) {
     const std::uint64_t key = hash64_extend(dimension_key, j);
     const std::uint32_t j1 = static_cast<std::uint32_t>(Rule::swap_word(key, 1) >> 63);
     const std::uint32_t j2 = HaltonPairTables::high_of_three_times(Rule::swap_word(key, 2));
-    std::uint32_t at = j1 == 0 ? 1 : 0;       // swap 1 from digit 0
-    at = at == 2 ? j2 : (at == j2 ? 2 : at);  // swap 2
-    out[j] = static_cast<std::uint8_t>(at);
+    out[j] = j1 + 2 * j2;
   }
 }
 
 // The same loops where AVX-512DQ multiplies 64-bit lanes: GCC vectorizes them 8 positions at a time.
-[[gnu::target("avx512f,avx512dq,avx512vl")]] std::uint64_t bits_of_zero2_avx512(std::uint64_t dimension_key) noexcept {
+[[gnu::target("avx512f,avx512dq,avx512vl,prefer-vector-width=512")]] std::uint64_t bits_of_zero2_avx512(
+    std::uint64_t dimension_key) noexcept {
   return bits_of_zero2(dimension_key);
 }
-[[gnu::target("avx512f,avx512dq,avx512vl")]] void images_of_zero3_avx512(std::uint64_t dimension_key,
-                                                                         std::uint8_t* out) noexcept {
-  images_of_zero3(dimension_key, out);
+[[gnu::target("avx512f,avx512dq,avx512vl,prefer-vector-width=512")]] void swap_codes_of3_avx512(
+    std::uint64_t dimension_key, std::uint64_t* out) noexcept {
+  swap_codes_of3(dimension_key, out);
 }
 
 }  // namespace
@@ -67,8 +76,8 @@ std::uint64_t HaltonPairTables::zero_bits2_portable(std::uint64_t dimension_key)
   return bits_of_zero2(dimension_key);
 }
 
-void HaltonPairTables::zero_images3_portable(std::uint64_t dimension_key, std::uint8_t* out) noexcept {
-  images_of_zero3(dimension_key, out);
+void HaltonPairTables::swap_codes3_portable(std::uint64_t dimension_key, std::uint64_t* out) noexcept {
+  swap_codes_of3(dimension_key, out);
 }
 
 bool HaltonPairTables::zero_images_vectorized() noexcept {
@@ -81,9 +90,9 @@ std::uint64_t HaltonPairTables::zero_bits2(std::uint64_t dimension_key) noexcept
   return zero_images_vectorized() ? bits_of_zero2_avx512(dimension_key) : bits_of_zero2(dimension_key);
 }
 
-void HaltonPairTables::zero_images3(std::uint64_t dimension_key, std::uint8_t* out) noexcept {
-  if (zero_images_vectorized()) return images_of_zero3_avx512(dimension_key, out);
-  images_of_zero3(dimension_key, out);
+void HaltonPairTables::swap_codes3(std::uint64_t dimension_key, std::uint64_t* out) noexcept {
+  if (zero_images_vectorized()) return swap_codes_of3_avx512(dimension_key, out);
+  swap_codes_of3(dimension_key, out);
 }
 
 void HaltonPairTables::build(std::uint64_t seed, std::uint64_t n, Set& set, unsigned coordinates) const noexcept {
@@ -95,22 +104,19 @@ void HaltonPairTables::build(std::uint64_t seed, std::uint64_t n, Set& set, unsi
   // Base 3: positions where some index < n has a non-zero digit (≤ chunk3, as n ≤ 3^chunk3).
   unsigned used = 0;
   for (std::uint64_t r = n - 1; r != 0; r /= 3) ++used;
-  std::uint32_t images[3];
-  for (unsigned j = 0; j < used; ++j) {
-    rule.permutation(1, j, 3, images);
-    for (std::uint32_t a = 0; a < 3; ++a) set.low3[j][a] = weight_times3[j][images[a]];
-  }
+  std::uint64_t code[48];  // each position's swaps: its permutation
+  swap_codes3(rule.dimension_key(1), code);
+  for (unsigned j = 0; j < used; ++j)
+    for (std::uint32_t a = 0; a < 3; ++a) set.low3[j][a] = weight_times3[j][code_permutations3[code[j]][a]];
   // Past the used positions every index has digit 0: π_j(0)·W_j, summed in
   // 128 bits per chunk (the rest of the first chunk kept whole, each later
   // chunk truncated to its top 64 bits, as digits.hpp's tables do).
-  std::uint8_t zero[48];  // π_j(0), read for j ≥ used
-  zero_images3(rule.dimension_key(1), zero);
   u128 rest = 0;
-  for (unsigned j = used; j < chunk3; ++j) rest += weight_times3[j][zero[j]];
+  for (unsigned j = used; j < chunk3; ++j) rest += zero_weight3[j][code[j]];
   std::uint64_t tail = 0;
   for (unsigned start = chunk3; start < positions3; start += chunk3) {
     u128 sum = 0;
-    for (unsigned j = start; j < std::min(start + chunk3, positions3); ++j) sum += weight_times3[j][zero[j]];
+    for (unsigned j = start; j < std::min(start + chunk3, positions3); ++j) sum += zero_weight3[j][code[j]];
     tail += static_cast<std::uint64_t>(sum >> 64);
   }
   set.first_chunk_rest3 = rest;

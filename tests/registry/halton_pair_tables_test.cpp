@@ -87,11 +87,12 @@ TEST(HaltonPairTables, TheRegistryOffersThemForHaltonUnderPermuteOnly) {
   EXPECT_EQ(offered, 1);
 }
 
-/// The tables' digit-0 images, computed without branches or 128-bit
-/// products, against the permutation rule's image() at every position of
-/// both bases, by both copies (the comparison of points cannot see
-/// positions past the 53rd bit), and ⌊3h/2^64⌋ against the 128-bit product at its thresholds.
-TEST(HaltonPairTables, ZeroImagesEqualTheRule) {
+/// The tables' permutations, computed without branches or 128-bit products
+/// (base 2: the digit-0 images; base 3: the swap codes), against the
+/// permutation rule's permutation() and image() at every position of both
+/// bases, by both copies (the comparison of points cannot see positions past
+/// the 53rd bit), and ⌊3h/2^64⌋ against the 128-bit product at its thresholds.
+TEST(HaltonPairTables, PermutationsEqualTheRule) {
   using u128 = unsigned __int128;
   for (std::uint64_t h :
        {0ull, 1ull, 0x5555555555555555ull, 0x5555555555555556ull, 0xAAAAAAAAAAAAAAAAull, 0xAAAAAAAAAAAAAAABull, ~0ull})
@@ -100,7 +101,7 @@ TEST(HaltonPairTables, ZeroImagesEqualTheRule) {
     const std::uint64_t h = hash64(i);
     ASSERT_EQ(HaltonPairTables::high_of_three_times(h), std::uint32_t((u128{h} * 3) >> 64)) << h;
   }
-  std::uint32_t moved[2] = {0, 0};
+  std::uint32_t moved[2] = {0, 0}, codes_seen[6] = {};
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
     const digits_detail::ShuffledPermutationRule rule(seed);
     const std::uint64_t bits = HaltonPairTables::zero_bits2(rule.dimension_key(0));
@@ -109,15 +110,23 @@ TEST(HaltonPairTables, ZeroImagesEqualTheRule) {
       ASSERT_EQ((bits >> (63 - j)) & 1, rule.image(0, j, 2, 0)) << seed << " " << j;
       moved[0] += rule.image(0, j, 2, 0) != 0;
     }
-    std::uint8_t zero[48] = {}, portable[48] = {};
-    HaltonPairTables::zero_images3(rule.dimension_key(1), zero);
-    HaltonPairTables::zero_images3_portable(rule.dimension_key(1), portable);
+    std::uint64_t code[48] = {}, portable[48] = {};
+    HaltonPairTables::swap_codes3(rule.dimension_key(1), code);
+    HaltonPairTables::swap_codes3_portable(rule.dimension_key(1), portable);
     for (unsigned j = 0; j < digits_detail::digit_count(3); ++j) {
-      ASSERT_EQ(zero[j], rule.image(1, j, 3, 0)) << seed << " " << j;
-      ASSERT_EQ(portable[j], rule.image(1, j, 3, 0)) << seed << " " << j;
-      moved[1] += zero[j] != 0;
+      ASSERT_EQ(code[j], portable[j]) << seed << " " << j;
+      ASSERT_LT(code[j], 6u) << seed << " " << j;
+      std::uint32_t images[3];
+      rule.permutation(1, j, 3, images);
+      for (std::uint32_t a = 0; a < 3; ++a) {
+        ASSERT_EQ(HaltonPairTables::code_permutations3[code[j]][a], images[a]) << seed << " " << j << " " << a;
+        ASSERT_EQ(images[a], rule.image(1, j, 3, a)) << seed << " " << j << " " << a;
+      }
+      moved[1] += images[0] != 0;
+      ++codes_seen[code[j]];
     }
   }
+  for (unsigned code = 0; code < 6; ++code) EXPECT_GT(codes_seen[code], 0u) << code;  // all six permutations occur
   EXPECT_GT(moved[0], 0u);  // the images are not all 0 (or the test would pass for an identity rule)
   EXPECT_GT(moved[1], 0u);
   if (!HaltonPairTables::zero_images_vectorized())

@@ -58,19 +58,36 @@ class HaltonPairTables {
   /// Points start … start + n − 1 of the set of `seed`, into out[2i], out[2i + 1].
   void fill(std::uint64_t seed, std::uint64_t start, std::uint64_t n, double* out) const;
 
-  /// π_j(0) of one dimension from its dimension key, at every position
-  /// (most of build()'s time: 2–3 hashes a position), written without
-  /// branches or 128-bit products so that the positions' hashes vectorize;
-  /// an AVX-512 copy is chosen at run time where the CPU has AVX-512DQ.
-  /// Base 2 as a word (bit 63 − j, j < 64), base 3 as bytes (j < 48, past
-  /// its 41 positions for whole vectors). The portable copies and the
+  /// The random part of one dimension's permutations, from its dimension
+  /// key, at every position (most of build()'s time: 2–3 hashes a
+  /// position), written without branches or 128-bit products so that the
+  /// positions' hashes vectorize; an AVX-512 copy is chosen at run time
+  /// where the CPU has AVX-512DQ. Base 2: π_j(0) as a word (bit 63 − j,
+  /// j < 64). Base 3: the swaps j_1, j_2 of the rule's shuffle as bytes
+  /// j_1 + 2·j_2 in words (j < 48, past its 41 positions for whole vectors), whose
+  /// permutations code_permutations3 lists. The portable copies and the
   /// choice are public for tests.
   static std::uint64_t zero_bits2(std::uint64_t dimension_key) noexcept;
-  static void zero_images3(std::uint64_t dimension_key, std::uint8_t* out) noexcept;
+  static void swap_codes3(std::uint64_t dimension_key, std::uint64_t* out) noexcept;
   static std::uint64_t zero_bits2_portable(std::uint64_t dimension_key) noexcept;
-  static void zero_images3_portable(std::uint64_t dimension_key, std::uint8_t* out) noexcept;
+  static void swap_codes3_portable(std::uint64_t dimension_key, std::uint64_t* out) noexcept;
   static bool zero_images_vectorized() noexcept;
-  /// ⌊3h / 2^64⌋ without a 128-bit product (zero_images3's second swap).
+  /// The permutation [π(0), π(1), π(2)] of swap code j_1 + 2·j_2: the rule's
+  /// Fisher–Yates shuffle of (0, 1, 2), swap 2 with j_2, then swap 1 with j_1.
+  static constexpr std::array<std::array<std::uint8_t, 3>, 6> code_permutations3 = [] {
+    std::array<std::array<std::uint8_t, 3>, 6> table{};
+    for (unsigned code = 0; code < 6; ++code) {
+      std::array<std::uint8_t, 3> images{0, 1, 2};
+      const unsigned j1 = code % 2, j2 = code / 2;
+      const std::uint8_t second = images[2];
+      images[2] = images[j2], images[j2] = second;
+      const std::uint8_t first = images[1];
+      images[1] = images[j1], images[j1] = first;
+      table[code] = images;
+    }
+    return table;
+  }();
+  /// ⌊3h / 2^64⌋ without a 128-bit product (swap_codes3's second swap).
   static constexpr std::uint32_t high_of_three_times(std::uint64_t h) noexcept {
     return std::uint32_t{h >= 0x5555555555555556ULL} + std::uint32_t{h >= 0xAAAAAAAAAAAAAAABULL};
   }
