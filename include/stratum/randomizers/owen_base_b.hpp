@@ -58,11 +58,14 @@ class BaseBOwenScrambler {
       const std::uint32_t base = bases[dim];
       Dimension d{base, digits_detail::digit_count(base), keys_.size(), digits_detail::FastDivider(base),
                   is_prime(base)};
-      for (unsigned j = 0; j < d.positions; ++j) {
-        // hash64(position_key, prefix) with its first mixing step done here.
-        keys_.push_back(mix64(hash64(key, dim, j) + golden));
-        weights_.push_back(digits_detail::digit_weight(base, j));
-      }
+      // hash64(key, dim, j) by extending the chain of hash64(key, dim) (the
+      // same words, one mix a position), each with the first mixing step of
+      // hash64(position_key, prefix) done here; the weights from the base's
+      // cached table (computing W_j is a 128-bit division and j products).
+      const std::uint64_t dimension_key = hash64(key, dim);
+      for (unsigned j = 0; j < d.positions; ++j) keys_.push_back(mix64(hash64_extend(dimension_key, j) + golden));
+      const std::vector<digits_detail::u128>& weights = digits_detail::digit_weights(base);
+      weights_.insert(weights_.end(), weights.begin(), weights.end());
       dims_.push_back(d);
     }
   }
