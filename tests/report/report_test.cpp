@@ -100,8 +100,12 @@ TEST(LectureSlides, TheIndexLinksASlideToItsFigureOrTableOnlyWhereTheRunHasIt) {
   const auto located = stratum::report::locate_slides({qmc});
   for (const auto& at : located) {
     EXPECT_EQ(at.section != nullptr, at.slide->section == "qmc") << at.slide->title;
-    if (at.slide->anchor == "table-radical-inverse") EXPECT_TRUE(at.found);
-    if (at.slide->anchor == "figure-qmc-star-vs-n") EXPECT_FALSE(at.found);
+    if (at.slide->anchor == "table-radical-inverse") {
+      EXPECT_TRUE(at.found);
+    }
+    if (at.slide->anchor == "figure-qmc-star-vs-n") {
+      EXPECT_FALSE(at.found);
+    }
   }
   const std::string html = stratum::report::report_html({qmc}, ReportOptions{}, 1.0);
   EXPECT_NE(html.find("href=\"#table-radical-inverse\""), std::string::npos);
