@@ -4,11 +4,12 @@
 # CMake files list every source, builds Release and runs ctest (the
 # CLI, MPI, report and CUDA tests) and pytest, runs the parsers' fuzz targets
 # briefly, builds the consumer example against an installed package, then
-# builds everything with AddressSanitizer + UBSan and runs the gtests and the
-# CLI tests there. The gtests are built once, in the sanitizer build: compiling
-# them is most of the build time. What only Release compiles (the x86-64-v3/v4
-# clones of the L2 and star kernels) pytest checks against scipy and brute
-# force. `ctest --preset release` alone still builds and runs the gtests.
+# builds everything with AddressSanitizer + UBSan and runs the gtests (one
+# process per core) and the CLI tests there. The gtests are built once, in the
+# sanitizer build: compiling them is most of the build time. What only Release
+# compiles (the x86-64-v3/v4 clones of the L2 and star kernels) pytest checks
+# against scipy and brute force. `ctest --preset release` alone still builds
+# and runs the gtests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh --test
@@ -52,5 +53,24 @@ bash scripts/build.sh asan
 # because GCC 12's LeakSanitizer misreads the dynamic TLS of dlopen'ed modules
 # on glibc 2.36 (here OpenImageIO's, loaded on first image I/O) and its tracer
 # crashes at exit (google/sanitizers#1322); static TLS is still scanned.
-ctest --preset asan -j "$jobs"
+# The gtests as one process per core (gtest's shards) rather than one process
+# per test as ctest runs them: each start of the sanitizer binary costs ~0.3 s,
+# ~800 times. Then the CLI and other script tests (label not gtest) under ctest.
+export ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1
+pids=()
+for ((shard = 0; shard < jobs; shard++)); do
+  (cd build/asan/tests && GTEST_TOTAL_SHARDS=$jobs GTEST_SHARD_INDEX=$shard ../bin/stratum_tests --gtest_brief=1 \
+    >"gtest_shard_$shard.log" 2>&1) &
+  pids+=($!)
+done
+failed=0
+for ((shard = 0; shard < jobs; shard++)); do
+  if ! wait "${pids[$shard]}"; then
+    echo "gtest shard $shard of $jobs FAILED:"; tail -60 "build/asan/tests/gtest_shard_$shard.log"; failed=1
+  else
+    tail -1 "build/asan/tests/gtest_shard_$shard.log"
+  fi
+done
+[ "$failed" = 0 ]
+ctest --preset asan -j "$jobs" -LE gtest
 echo "all tests passed"
