@@ -80,18 +80,18 @@ void HaltonPairTables::swap_codes3_portable(std::uint64_t dimension_key, std::ui
   swap_codes_of3(dimension_key, out);
 }
 
-bool HaltonPairTables::zero_images_vectorized() noexcept {
+bool HaltonPairTables::vectorized() noexcept {
   static const bool supported =
       __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
   return supported;
 }
 
 std::uint64_t HaltonPairTables::zero_bits2(std::uint64_t dimension_key) noexcept {
-  return zero_images_vectorized() ? bits_of_zero2_avx512(dimension_key) : bits_of_zero2(dimension_key);
+  return vectorized() ? bits_of_zero2_avx512(dimension_key) : bits_of_zero2(dimension_key);
 }
 
 void HaltonPairTables::swap_codes3(std::uint64_t dimension_key, std::uint64_t* out) noexcept {
-  if (zero_images_vectorized()) return swap_codes_of3_avx512(dimension_key, out);
+  if (vectorized()) return swap_codes_of3_avx512(dimension_key, out);
   swap_codes_of3(dimension_key, out);
 }
 

@@ -149,9 +149,8 @@ static PointSet generate_halton(const SamplerRequest& request) {
       start + n <= HaltonPairTables::max_points) {
     // The engine for small 2D sets: the permutations the n points use, not
     // RandomDigitPermutations' tables (equal bit for bit: halton_pair_tables_test).
-    static const HaltonPairTables tables;  // the digit weights, built once
     PointSet points{n, 2, std::make_unique<double[]>(2 * n)};
-    tables.fill(request.seed, start, n, points.data.get());
+    HaltonPairTables().fill(request.seed, start, n, points.data.get());
     return points;
   }
   auto scrambled = with_digit_scrambler(request, bases, start + n - 1, [&](const auto& scrambler) {

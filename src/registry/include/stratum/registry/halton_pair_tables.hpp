@@ -63,15 +63,16 @@ class HaltonPairTables {
   /// position), written without branches or 128-bit products so that the
   /// positions' hashes vectorize; an AVX-512 copy is chosen at run time
   /// where the CPU has AVX-512DQ. Base 2: π_j(0) as a word (bit 63 − j,
-  /// j < 64). Base 3: the swaps j_1, j_2 of the rule's shuffle as bytes
-  /// j_1 + 2·j_2 in words (j < 48, past its 41 positions for whole vectors), whose
+  /// j < 64). Base 3: the swaps j_1, j_2 of the rule's shuffle as codes
+  /// j_1 + 2·j_2, one 64-bit word a position (a byte store halves GCC's
+  /// vector width; j < 48, past its 41 positions for whole vectors), whose
   /// permutations code_permutations3 lists. The portable copies and the
-  /// choice are public for tests.
+  /// choice (vectorized()) are public for tests.
   static std::uint64_t zero_bits2(std::uint64_t dimension_key) noexcept;
   static void swap_codes3(std::uint64_t dimension_key, std::uint64_t* out) noexcept;
   static std::uint64_t zero_bits2_portable(std::uint64_t dimension_key) noexcept;
   static void swap_codes3_portable(std::uint64_t dimension_key, std::uint64_t* out) noexcept;
-  static bool zero_images_vectorized() noexcept;
+  static bool vectorized() noexcept;
   /// The permutation [π(0), π(1), π(2)] of swap code j_1 + 2·j_2: the rule's
   /// Fisher–Yates shuffle of (0, 1, 2), swap 2 with j_2, then swap 1 with j_1.
   static constexpr std::array<std::array<std::uint8_t, 3>, 6> code_permutations3 = [] {
