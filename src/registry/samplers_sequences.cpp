@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "families.hpp"
 #include "stratum/randomizers/base2.hpp"
@@ -75,8 +76,9 @@ static PointSet fill_each(std::uint64_t n, unsigned d, unsigned threads, const S
 
 /// The one dispatch of the base-b digit randomizers (family base_b_digits):
 /// calls use(scrambler) with the scrambler of request.randomizer (permute,
-/// xor or owen) over `bases` for digit words up to `max_word`; nullopt for
-/// none and cp, which act on the construction's value, not its digits.
+/// xor or owen) over `bases` for digit words up to `max_word`, an rvalue that
+/// use may keep; nullopt for none and cp, which act on the construction's
+/// value, not its digits.
 template <class Use>
 static auto with_digit_scrambler(const SamplerRequest& request, const std::vector<std::uint32_t>& bases,
                                  std::uint64_t max_word, const Use& use)
@@ -167,8 +169,9 @@ static PointSet generate_halton(const SamplerRequest& request) {
 static PointGenerator bind_halton(const SamplerRequest& request) {
   const std::vector<std::uint32_t> bases = halton_bases(request);
   const std::uint64_t max_index = request.start + *request.n - 1;
-  auto scrambled = with_digit_scrambler(request, bases, max_index, [&](const auto& scrambler) {
-    return plain_generator(request.d, std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler));
+  auto scrambled = with_digit_scrambler(request, bases, max_index, [&](auto&& scrambler) {
+    using Scrambler = std::decay_t<decltype(scrambler)>;
+    return plain_generator(request.d, std::make_shared<const Scrambler>(std::forward<Scrambler>(scrambler)));
   });
   if (scrambled) return std::move(*scrambled);
   if (request.values.has("bases")) return bind_rotated(radical_inverses_of)(request);
@@ -228,8 +231,9 @@ static PointGenerator bind_faure(const SamplerRequest& request) {
   for (std::uint64_t last = request.start + *request.n - 1; last != 0; last /= faure.base()) bound *= faure.base();
   const std::uint64_t max_word = bound > ~std::uint64_t{0} ? ~std::uint64_t{0} : static_cast<std::uint64_t>(bound - 1);
   // The lambdas hold the shared construction, never a copy of its matrices.
-  auto scrambled = with_digit_scrambler(request, bases, max_word, [&](const auto& scrambler) {
-    auto scrambling = std::make_shared<const std::decay_t<decltype(scrambler)>>(scrambler);
+  auto scrambled = with_digit_scrambler(request, bases, max_word, [&](auto&& scrambler) {
+    using Scrambler = std::decay_t<decltype(scrambler)>;
+    auto scrambling = std::make_shared<const Scrambler>(std::forward<Scrambler>(scrambler));
     return PointGenerator(d, [scrambling, shared](std::uint64_t i, unsigned j) {
       return scrambling->sample(shared->digit_word(i, j), j);
     });

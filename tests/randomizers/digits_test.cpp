@@ -57,6 +57,12 @@ TEST(Digits, DigitCountIsTheFirstPowerReachingTwoToThe64) {
     EXPECT_LT(std::pow(static_cast<long double>(b), k - 1), 0x1.0p64L) << b;
     EXPECT_GE(std::pow(static_cast<long double>(b), k), 0x1.0p64L) << b;
   }
+  // Every base the randomizers take, against the definition in 128 bits.
+  for (std::uint32_t b = 2; b <= digits_detail::max_base; ++b) {
+    unsigned k = 0;
+    for (digits_detail::u128 power = 1; power < (digits_detail::u128{1} << 64); power *= b) ++k;
+    ASSERT_EQ(digits_detail::digit_count(b), k) << b;
+  }
 }
 
 TEST(Digits, ChunksHoldAtMost4096Entries) {

@@ -130,6 +130,55 @@ TEST(BaseBOwenScrambler, NodePermutationsAreUniform) {
   EXPECT_GT(chi_squared_p(chi_squared(images25, nodes / 25.0), 24), level);
 }
 
+// The nodes that share a prefix draw their shifts π(0) from that prefix's
+// words: the shifts of two positions must still be independent, whether
+// they come from one word, from the two sides of a word boundary (D(3) = 18,
+// D(13) = 8, D(29) = 6) or from words apart. 20000 prefixes, the pair
+// (π_{j1,p}(0), π_{j2,p}(0)) against uniform on b² cells; 9 χ² tests at
+// family-wise α = 1e-3 (Šidák).
+TEST(BaseBOwenScrambler, ShiftsSharingAPrefixAreIndependent) {
+  struct Pair {
+    unsigned dim, j1, j2;
+  };
+  const std::vector<std::uint32_t> bases = {2, 3, 13, 29};
+  const std::vector<Pair> pairs = {{0, 20, 21}, {0, 20, 63}, {1, 10, 11}, {1, 17, 18}, {1, 10, 40},
+                                   {2, 6, 7},   {2, 7, 8},   {3, 5, 6},   {3, 3, 13}};
+  const BaseBOwenScrambler s(17, bases);
+  const double level = sidak(1e-3, static_cast<int>(pairs.size()));
+  const int prefixes = 20000;  // every prefix p < b^j1: a node at both positions
+  for (const Pair& pair : pairs) {
+    const std::uint32_t b = bases[pair.dim];
+    ASSERT_GE(std::pow(double(b), pair.j1), double(prefixes));
+    std::vector<int> counts(std::size_t{b} * b, 0);
+    for (std::uint64_t p = 0; p < prefixes; ++p)
+      ++counts[s.permute_digit(pair.dim, pair.j1, p, 0) * b + s.permute_digit(pair.dim, pair.j2, p, 0)];
+    EXPECT_GT(chi_squared_p(chi_squared(counts, prefixes / double(b * b)), double(b * b - 1)), level)
+        << "base " << b << " positions " << pair.j1 << ", " << pair.j2;
+  }
+}
+
+// A point's digits past its last nonzero one are summed a word at a time:
+// the value must equal the node-by-node sum for indices whose digit count
+// ends anywhere in a word (base 3: D = 18, K = 41; base 5: D = 12, K = 28).
+TEST(BaseBOwenScrambler, TailSumsEqualTheNodesAtEveryDigitCount) {
+  const BaseBOwenScrambler s(33, {3, 5, 65536});
+  for (unsigned dim = 0; dim < 3; ++dim) {
+    const std::uint32_t b = s.base(dim);
+    std::uint64_t top = 1;  // b^k: the first index with k + 1 digits
+    for (unsigned k = 0; k < digits_detail::digit_count(b); ++k) {
+      // b^k, b^k + 1 and the last index with k + 1 digits (b^(k+1) − 1, or 2^64 − 1)
+      const std::uint64_t last = top > ~std::uint64_t{0} / b ? ~std::uint64_t{0} : top * b - 1;
+      for (std::uint64_t index : {top, top + 1, last}) {
+        const long double expected = oracle(s, dim, index);
+        EXPECT_LE(s.sample(index, dim), expected) << b << " " << index;
+        EXPECT_GT(s.sample(index, dim), expected - 0x1.0p-53L - 0x1.0p-60L) << b << " " << index;
+      }
+      if (top > ~std::uint64_t{0} / b) break;
+      top *= b;
+    }
+  }
+}
+
 TEST(BaseBOwenScrambler, FirstBToTheKPointsStratifyTheUnitInterval) {
   const BaseBOwenScrambler s(2, {2, 3, 5, 29});
   for (unsigned dim = 0; dim < 4; ++dim) {

@@ -95,7 +95,13 @@ TEST(Faure, EqualsTheBruteForceMatrixConstruction) {
         for (unsigned k = 0; k < size; ++k) ASSERT_EQ(faure.generator(j, r, k), c[r][k]) << s << " " << j;
       std::vector<std::uint64_t> indices;
       for (std::uint64_t i = 0; i < 600; ++i) indices.push_back(i);
-      for (std::uint64_t i : {std::uint64_t{1} << 30, (std::uint64_t{1} << 40) + 77, std::uint64_t{123456789012345}})
+      // Up to b^R − 1, the last index whose digits all stay (past 2^60: the
+      // digits' quotients change from the reciprocal to a division).
+      unsigned __int128 last = 1;
+      for (unsigned r = 0; r < faure.output_digits(); ++r) last *= b;
+      const auto largest = static_cast<std::uint64_t>(last - 1);
+      for (std::uint64_t i : {std::uint64_t{1} << 30, (std::uint64_t{1} << 40) + 77, std::uint64_t{123456789012345},
+                              largest / 3 * 2, largest - 5, largest})
         indices.push_back(i);
       for (std::uint64_t i : indices) {
         std::uint64_t word = 0;

@@ -63,10 +63,16 @@ inline constexpr std::uint32_t max_base = 65536;
 inline constexpr std::uint32_t max_chunk_size = 4096;
 
 /// K(b): the smallest K with b^K ≥ 2^64, the number of positions scrambled.
+/// In 64-bit steps (a scrambler built per pixel set computes it: the 128-bit
+/// loop was most of base 2's construction).
 constexpr unsigned digit_count(std::uint32_t base) noexcept {
-  unsigned count = 0;
-  for (u128 power = 1; power < (u128{1} << 64); power *= base) ++count;
-  return count;
+  if ((base & (base - 1)) == 0) {  // b = 2^k: ⌈64 / k⌉
+    const auto k = static_cast<unsigned>(std::countr_zero(base));
+    return (64 + k - 1) / k;
+  }
+  unsigned count = 1;  // b^count ≤ 2^64 − 1 < b^K, and b^K ≠ 2^64 for such b
+  for (std::uint64_t power = base; power <= ~std::uint64_t{0} / base; power *= base) ++count;
+  return count + 1;
 }
 
 /// m(b): positions per chunk, the largest m ≥ 1 with b^m ≤ 4096.

@@ -9,32 +9,39 @@
 /// Owen's variance bounds (Owen 1997, "Monte Carlo variance of scrambled net
 /// quadrature").
 ///
-/// There are too many prefixes to tabulate, so each node's permutation comes
-/// from a 64-bit word w = hash64(hash64(seed, dim, j), prefix), the prefix
-/// coded as index mod b^j; every one of the K(b) positions of digits.hpp is
-/// scrambled, including the 0 digits past the index's last one.
-///  - b = 2: π(a) = a ⊕ (top bit of w), exactly uniform.
-///  - 3 ≤ b ≤ 24: a uniform permutation decoded from w (and two more words
-///    when b > 12) read as fractions: their mixed-radix digits in radices
-///    2, 3, …, b drive a Fisher–Yates shuffle (Durstenfeld 1964). Total-
-///    variation distance to uniform < 2^-34 (b!/2^64 for b ≤ 12): exact for
-///    every practical purpose.
-///  - b > 24: π(a) = (m·σ(a) + s) mod b, σ a keyed bijection of {0..b−1}
-///    by cycle walking (Black, Rogaway 2002, "Ciphers with arbitrary finite
-///    domains"; as Kensler 2013's permute), m uniform in {1..b−1} (only for
-///    prime b; m = 1 otherwise) and s uniform in {0..b−1}. Each image is
-///    exactly uniform, and for prime b every pair of images is uniform over
-///    distinct pairs, which is all that the variance of scrambled-net
-///    quadrature depends on (Owen 1997: it is a sum over pairs of points),
-///    so the variance is that of nested uniform scrambling; the full law of
-///    a permutation is not uniform on all b! permutations.
-/// Cost: one hash per digit position (K(b) of them, 64 in base 2), so this
-/// is tens of times slower than the tabulated digit permutations.
+/// There are too many nodes (j, p) to tabulate (p = index mod b^j codes the
+/// prefix), so each node's permutation is drawn from hashes, split as
+/// π_{j,p}(a) = (m · τ_{j,p}(a) + s_{j,p}) mod b with τ(0) = 0. Every
+/// permutation is exactly one shift of one permutation fixing 0, so π is
+/// uniform when the shift s = π(0) and τ are:
+///  - s_{j,p}, for every position j, comes from words of the prefix alone,
+///    w_k = hash(key_k, p): in base 2 bit j of one word (exact), in base b
+///    digit t of word k = ⌊j / D⌋ read as a base-b fraction, t = j mod D,
+///    D = D(b) digits a word with b^D ≤ 2^30 (their joint law within 2^-34
+///    of uniform in total variation).
+///  - τ_{j,p} (only where the index's digit is not 0), from one hash of
+///    (key, j, p): b = 2, the identity; 3 ≤ b ≤ 24, a uniform permutation of
+///    {1..b−1} by a Fisher–Yates shuffle (Durstenfeld 1964) whose draws are
+///    the word's mixed-radix digits in radices 2, 3, …, b−1 (two more words
+///    past radix 12 and 18); b > 24, 1 + σ(a − 1) with σ a keyed bijection
+///    of {0..b−2} by cycle walking (Black, Rogaway 2002; as Kensler 2013's
+///    permute) and m uniform in {1..b−1} for prime b (m = 1 otherwise): each
+///    image uniform and, for prime b, every pair of images uniform over
+///    distinct pairs, all the variance of scrambled-net quadrature depends
+///    on (Owen 1997: a sum over pairs of points).
+/// Why the split: a node's prefix p < b^j, and the prefixes index mod b^j of
+/// one point change only at its nonzero digits, so a point with k nonzero
+/// digits reads the words of k + 1 prefixes and hashes τ k times, instead of
+/// one hash for each of the K(b) positions (64 in base 2); past its last
+/// nonzero digit every image is a shift of the same prefix, summed from each
+/// word at once. Every one of the K(b) positions of digits.hpp is scrambled.
 ///
 /// Device code (docs/gpu.md): a sample reads the keys and weights through a
 /// View (pointers, trivially copyable) that a kernel takes by value; view()
 /// points into the scrambler, view(copy) into copies that `copy` makes.
+#include <algorithm>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -47,26 +54,33 @@ namespace stratum {
 
 /// Nested uniform (Owen) scrambling of radical inverses in any base ("owen"):
 /// dimension `dim` uses base bases[dim]; sample(index, dim) depends only on
-/// (seed, dim, index). Construction computes K(b) keys and weights per
-/// dimension; a sample allocates nothing.
+/// (seed, dim, index). Construction computes a few keys per dimension (and
+/// copies the base's K(b) weights, b > 2); a sample allocates nothing.
 class BaseBOwenScrambler {
  public:
   BaseBOwenScrambler(std::uint64_t seed, std::vector<std::uint32_t> bases) {
     digits_detail::require_digit_bases(bases);
     const std::uint64_t key = hash64(seed, 0x6f77656e62ULL /* "owenb" */);
+    dims_.reserve(bases.size());
+    for (const std::uint32_t base : bases) {
+      const unsigned positions = digits_detail::digit_count(base), per_word = word_digits(base);
+      dims_.push_back(
+          {base, positions, per_word, keys_.size(), weights_.size(), digits_detail::FastDivider(base), is_prime(base)});
+      keys_.resize(keys_.size() + 1 + (positions + per_word - 1) / per_word);
+      if (base != 2) weights_.resize(weights_.size() + positions);
+    }
     for (unsigned dim = 0; dim < bases.size(); ++dim) {
-      const std::uint32_t base = bases[dim];
-      Dimension d{base, digits_detail::digit_count(base), keys_.size(), digits_detail::FastDivider(base),
-                  is_prime(base)};
-      // hash64(key, dim, j) by extending the chain of hash64(key, dim) (the
-      // same words, one mix a position), each with the first mixing step of
-      // hash64(position_key, prefix) done here; the weights from the base's
-      // cached table (computing W_j is a 128-bit division and j products).
+      const Dimension& d = dims_[dim];
+      // τ's key, then one key per prefix word; each pre-mixed as node_word
+      // expects (the first step of hash64(key, prefix)).
       const std::uint64_t dimension_key = hash64(key, dim);
-      for (unsigned j = 0; j < d.positions; ++j) keys_.push_back(mix64(hash64_extend(dimension_key, j) + golden));
-      const std::vector<digits_detail::u128>& weights = digits_detail::digit_weights(base);
-      weights_.insert(weights_.end(), weights.begin(), weights.end());
-      dims_.push_back(d);
+      const std::size_t end = dim + 1 < dims_.size() ? dims_[dim + 1].first_key : keys_.size();
+      for (std::size_t k = d.first_key; k < end; ++k)
+        keys_[k] = mix64(hash64_extend(dimension_key, k - d.first_key) + golden);
+      if (d.base != 2) {
+        const std::vector<digits_detail::u128>& weights = digits_detail::digit_weights(d.base);
+        std::copy(weights.begin(), weights.end(), weights_.begin() + static_cast<std::ptrdiff_t>(d.first_weight));
+      }
     }
   }
 
@@ -88,7 +102,12 @@ class BaseBOwenScrambler {
   std::uint32_t permute_digit(unsigned dim, unsigned position, std::uint64_t prefix,
                               std::uint32_t digit) const noexcept {
     const Dimension& d = dims_[dim];
-    return node_image(d, node_word(keys_[d.first + position], prefix), digit);
+    const std::uint64_t* keys = keys_.data() + d.first_key;
+    if (d.base == 2) return digit ^ static_cast<std::uint32_t>((node_word(keys[1], prefix) >> (63 - position)) & 1);
+    const unsigned t = position % d.word_digits;
+    const std::uint64_t word = node_word(keys[1 + position / d.word_digits], prefix);
+    const std::uint32_t shift = word_digit(d, word, power_of(d.base, t + 1));
+    return digit == 0 ? shift : image(d, keys[0], position, prefix, digit, shift);
   }
 
  private:
@@ -96,8 +115,10 @@ class BaseBOwenScrambler {
 
   struct Dimension {
     std::uint32_t base;
-    unsigned positions;  // K(b)
-    std::size_t first;   // into keys_ and weights_
+    unsigned positions;    // K(b)
+    unsigned word_digits;  // D(b): shifts read from one prefix word
+    std::size_t first_key;
+    std::size_t first_weight;
     digits_detail::FastDivider divider;
     bool prime;
   };
@@ -113,26 +134,43 @@ class BaseBOwenScrambler {
     /// The scrambled radical inverse of `index` as a 64-bit binary fraction.
     STRATUM_HOST_DEVICE std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
       const Dimension& d = dims_[dim];
-      const std::uint64_t* keys = keys_ + d.first;
-      if (d.base == 2) {
-        std::uint64_t flips = 0;
-        for (unsigned j = 0; j < 64; ++j) {
-          const std::uint64_t prefix = index & ((std::uint64_t{1} << j) - 1);
-          flips |= (node_word(keys[j], prefix) >> 63) << (63 - j);
-        }
-        return reverse_bits64(index) ^ flips;
-      }
-      const digits_detail::u128* weights = weights_ + d.first;
+      const std::uint64_t* keys = keys_ + d.first_key;
+      if (d.base == 2) return fraction2(index, keys[1]);
+      const digits_detail::u128* weights = weights_ + d.first_weight;
+      const std::uint32_t b = d.base;
       digits_detail::u128 sum = 0;
-      std::uint64_t prefix = 0;
-      std::uint64_t power = 1;  // b^j modulo 2^64: only multiplies digits 0 once it wraps
-      for (unsigned j = 0; j < d.positions; ++j) {
-        const std::uint64_t next = d.divider.quotient(index);
-        const auto digit = static_cast<std::uint32_t>(index - next * d.base);
-        index = next;
-        sum += static_cast<digits_detail::u128>(node_image(d, node_word(keys[j], prefix), digit)) * weights[j];
-        prefix += digit * power;
-        power *= d.base;
+      std::uint64_t prefix = 0, rest = index;
+      std::uint64_t power = 1;       // b^j modulo 2^64: only multiplies digits 0 once it wraps
+      unsigned j = 0, t = 0;         // position, and its digit in its prefix word
+      std::uint64_t word_power = 1;  // b^t
+      std::uint64_t word = 0;
+      bool fresh = false;  // `word` is word ⌊j / D⌋ of `prefix`
+      // The index's digits, up to its last nonzero one, one at a time.
+      for (; rest != 0; ++j, ++t, power *= b, word_power *= b) {
+        if (t == d.word_digits) t = 0, word_power = 1, fresh = false;
+        const std::uint64_t next = d.divider.quotient(rest);
+        const auto digit = static_cast<std::uint32_t>(rest - next * b);
+        rest = next;
+        if (!fresh) word = node_word(keys[1 + j / d.word_digits], prefix), fresh = true;
+        const std::uint32_t shift = word_digit(d, word, word_power * b);
+        const std::uint32_t image_j = digit == 0 ? shift : image(d, keys[0], j, prefix, digit, shift);
+        sum += static_cast<digits_detail::u128>(image_j) * weights[j];
+        if (digit != 0) prefix += digit * power, fresh = false;
+      }
+      // Past it every digit is 0 and the prefix is the index: the images are
+      // the shifts, the rest of each word's digits as one integer,
+      // ⌊frac(w·b^t / 2^64)·b^(c−t)⌋ for digits t..c−1 (their weights sum
+      // to that integer times the weight of digit c−1, up to the floors).
+      while (j < d.positions) {
+        if (t == d.word_digits) t = 0, word_power = 1, fresh = false;
+        if (!fresh) word = node_word(keys[1 + j / d.word_digits], prefix);
+        const unsigned first = j - t;  // the word's first position
+        const unsigned count = d.positions - first < d.word_digits ? d.positions - first : d.word_digits;
+        const auto below = static_cast<std::uint64_t>(static_cast<digits_detail::u128>(word) * word_power);
+        const auto digits =
+            static_cast<std::uint64_t>((static_cast<digits_detail::u128>(below) * power_of(b, count - t)) >> 64);
+        sum += static_cast<digits_detail::u128>(digits) * weights[first + count - 1];
+        j = first + count, t = d.word_digits, fresh = false;
       }
       return static_cast<std::uint64_t>(sum >> 64);
     }
@@ -142,6 +180,23 @@ class BaseBOwenScrambler {
     }
 
    private:
+    // Base 2: π(a) = a ⊕ s, so the fraction is the reversed index ⊕ the
+    // shifts; the positions lo..hi that share a prefix take bits 63−hi..63−lo
+    // of its word (position j is bit 63 − j, the fraction's order).
+    STRATUM_HOST_DEVICE static std::uint64_t fraction2(std::uint64_t index, std::uint64_t word_key) noexcept {
+      std::uint64_t flips = 0, prefix = 0, rest = index;
+      unsigned lo = 0;
+      for (;;) {
+        const unsigned hi = rest == 0 ? 63u : static_cast<unsigned>(countr_zero64(rest));
+        flips |= node_word(word_key, prefix) & ((~std::uint64_t{0} >> lo) & (~std::uint64_t{0} << (63 - hi)));
+        if (rest == 0 || hi == 63) break;
+        prefix |= std::uint64_t{1} << hi;
+        rest &= rest - 1;
+        lo = hi + 1;
+      }
+      return reverse_bits64(index) ^ flips;
+    }
+
     const Dimension* dims_;
     const std::uint64_t* keys_;
     const digits_detail::u128* weights_;
@@ -164,58 +219,84 @@ class BaseBOwenScrambler {
     return n >= 2;
   }
 
-  // hash64(position key, prefix), the position key pre-mixed.
+  /// D(b): 64 in base 2 (a word's bits), else the largest D ≥ 1 with b^D ≤ 2^30.
+  static constexpr unsigned word_digits(std::uint32_t base) noexcept {
+    if (base == 2) return 64;
+    if (base > (1u << 15)) return 1;
+    unsigned count = 1;
+    for (std::uint64_t p = base; p * base <= (std::uint64_t{1} << 30); p *= base) ++count;
+    return count;
+  }
+
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t power_of(std::uint64_t base, unsigned exponent) noexcept {
+    std::uint64_t result = 1;
+    for (; exponent != 0; exponent >>= 1, base *= base)
+      if (exponent & 1) result *= base;
+    return result;
+  }
+
+  // hash64(pre-mixed key, prefix).
   STRATUM_HOST_DEVICE static constexpr std::uint64_t node_word(std::uint64_t mixed_key, std::uint64_t prefix) noexcept {
     return mix64((mixed_key ^ (prefix * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + golden);
   }
 
-  // Image of `digit` under the permutation of the node whose word is w.
-  STRATUM_HOST_DEVICE static std::uint32_t node_image(const Dimension& d, std::uint64_t w,
-                                                      std::uint32_t digit) noexcept {
+  // Digit t of `word` read as a base-b fraction, ⌊w·b^(t+1) / 2^64⌋ mod b,
+  // given b^(t+1) (≤ 2^30).
+  STRATUM_HOST_DEVICE static std::uint32_t word_digit(const Dimension& d, std::uint64_t word,
+                                                      std::uint64_t power_next) noexcept {
+    const auto leading = static_cast<std::uint64_t>((static_cast<digits_detail::u128>(word) * power_next) >> 64);
+    return static_cast<std::uint32_t>(leading - d.divider.quotient(leading) * d.base);
+  }
+
+  // π_{j,p}(digit) = (m·τ(digit) + shift) mod b for a nonzero digit (b > 2).
+  STRATUM_HOST_DEVICE static std::uint32_t image(const Dimension& d, std::uint64_t tau_key, unsigned position,
+                                                 std::uint64_t prefix, std::uint32_t digit,
+                                                 std::uint32_t shift) noexcept {
     const std::uint32_t b = d.base;
-    if (b == 2) return digit ^ static_cast<std::uint32_t>(w >> 63);
+    const std::uint64_t w = node_word(mix64(tau_key + (position + 1) * golden), prefix);
+    std::uint64_t m = 1;
+    std::uint32_t tau = 0;
     if (b <= 24) {
-      // Fisher–Yates (swap positions i and j_i for i = b−1 down to 1, from the
-      // identity) with draws j_i ∈ [0, i] read off a 64-bit fraction u as
-      // mixed-radix digits, j_i = ⌊u·(i+1)⌋, u ← frac(u·(i+1)), for
-      // i = 1, 2, …: the order in which the image of `digit` is traced back
-      // through the swaps, so no array is needed. Radices 2–12, 13–18 and
-      // 19–24 read three words (products 2^28.8, 2^23.7, 2^26.5 ≪ 2^64).
-      std::uint32_t position = digit;
+      // Fisher–Yates over the b − 1 elements 1..b−1 (swap i and j_i for
+      // i = b−2 down to 1, elements counted from 0) with draws j_i ∈ [0, i]
+      // read off a 64-bit fraction u as mixed-radix digits, j_i = ⌊u·(i+1)⌋,
+      // u ← frac(u·(i+1)), for i = 1, 2, …: the order in which the image is
+      // traced back through the swaps, so no array is needed. Radices 2–12,
+      // 13–18 and 19–23 read three words (products 2^28.8, 2^23.7, 2^21.9).
+      std::uint32_t position_of = digit - 1;
       std::uint64_t u = w;
-      for (std::uint32_t i = 1; i < b; ++i) {
+      for (std::uint32_t i = 1; i + 1 < b; ++i) {
         if (i == 12) u = mix64(w + golden);
         if (i == 18) u = mix64(w + 2 * golden);
         const digits_detail::u128 product = static_cast<digits_detail::u128>(u) * (i + 1);
         const auto j = static_cast<std::uint32_t>(product >> 64);
         u = static_cast<std::uint64_t>(product);
-        position = position == i ? j : (position == j ? i : position);
+        position_of = position_of == i ? j : (position_of == j ? i : position_of);
       }
-      return position;
+      tau = 1 + position_of;
+    } else {
+      // A bijection of k-bit words (xor, odd multiply, xorshift and add are
+      // each invertible mod 2^k), iterated until it lands below b − 1
+      // (cycle walking): σ of {0..b−2}.
+      const std::uint64_t w2 = mix64(w + golden);
+      const unsigned bits = static_cast<unsigned>(bit_width64(b - 2));
+      const std::uint32_t mask = (std::uint32_t{1} << bits) - 1;
+      const auto flip = static_cast<std::uint32_t>(w2);
+      const auto odd = static_cast<std::uint32_t>(w2 >> 32) | 1u;
+      const auto offset = static_cast<std::uint32_t>(w);  // m takes w's leading bits
+      std::uint32_t x = digit - 1;
+      do {
+        x = (x ^ flip) & mask;
+        x = (x * odd) & mask;
+        x ^= x >> (bits / 2);
+        x = (x + offset) & mask;
+        x = (x * 0x2c1b3c6du) & mask;
+        x ^= x >> ((bits + 2) / 3);
+      } while (x >= b - 1);
+      tau = 1 + x;
+      if (d.prime) m = 1 + static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w) * (b - 1)) >> 64);
     }
-    // Keyed bijection of {0..b−1}: a bijection of k-bit words (xor, odd
-    // multiply, xorshift and add are each invertible mod 2^k), iterated until
-    // it lands below b (cycle walking).
-    const std::uint64_t w2 = mix64(w + golden);
-    const std::uint64_t w3 = mix64(w2 + golden);
-    const unsigned bits = static_cast<unsigned>(bit_width64(b - 1));
-    const std::uint32_t mask = (std::uint32_t{1} << bits) - 1;
-    const auto flip = static_cast<std::uint32_t>(w3);
-    const auto odd = static_cast<std::uint32_t>(w3 >> 32) | 1u;
-    const auto offset = static_cast<std::uint32_t>(w);  // m takes w's leading bits
-    std::uint32_t x = digit;
-    do {
-      x = (x ^ flip) & mask;
-      x = (x * odd) & mask;
-      x ^= x >> (bits / 2);
-      x = (x + offset) & mask;
-      x = (x * 0x2c1b3c6du) & mask;
-      x ^= x >> ((bits + 2) / 3);
-    } while (x >= b);
-    const std::uint64_t m =
-        d.prime ? 1 + static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w) * (b - 1)) >> 64) : 1;
-    const std::uint64_t s = static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w2) * b) >> 64);
-    return static_cast<std::uint32_t>((m * x + s) % b);
+    return static_cast<std::uint32_t>((m * tau + shift) % b);
   }
 
   std::vector<Dimension> dims_;

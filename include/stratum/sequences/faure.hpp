@@ -74,10 +74,18 @@ class Faure {
 
   /// Σ_r y_r b^r with y = C_dim · (digits of index) mod b, r < R(b).
   std::uint64_t digit_word(std::uint64_t index, unsigned dim) const noexcept {
+    // Quotients by b through its reciprocal (radical_inverse_reciprocal),
+    // exact below 2^(64 − ⌈log2 b⌉): the row sums always are, an index
+    // mostly (a renderer's are small); a hardware division above.
+    const std::uint64_t exact_below = std::uint64_t{1} << (64 - bit_width64(base_ - 1));
+    auto quotient = [&](std::uint64_t n) {
+      return n < exact_below ? static_cast<std::uint64_t>((static_cast<unsigned __int128>(n) * reciprocal_) >> 64)
+                             : n / base_;
+    };
     std::uint32_t digits[64];
     unsigned count = 0;
     for (; index != 0; ++count) {
-      const std::uint64_t next = index / base_;
+      const std::uint64_t next = quotient(index);
       digits[count] = static_cast<std::uint32_t>(index - next * base_);
       index = next;
     }
@@ -85,9 +93,9 @@ class Faure {
     std::uint64_t word = 0;
     for (unsigned r = count < output_digits_ ? count : output_digits_; r-- > 0;) {
       const std::uint32_t* row = matrix + static_cast<std::size_t>(r) * index_digits_;
-      std::uint64_t sum = 0;  // ≤ 64 terms below b² ≤ 2^21 each
+      std::uint64_t sum = 0;  // ≤ 64 terms below b² ≤ 2^21 each: < 2^27, below exact_below for b ≤ 2^37
       for (unsigned c = r; c < count; ++c) sum += static_cast<std::uint64_t>(row[c]) * digits[c];
-      word = word * base_ + sum % base_;
+      word = word * base_ + (sum - quotient(sum) * base_);
     }
     return word;
   }
