@@ -37,9 +37,12 @@
 /// view() points into the scrambler, view(copy) into copies that `copy`
 /// makes of each array (e.g. in device memory).
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -62,10 +65,8 @@ inline constexpr std::uint32_t max_base = 65536;
 /// Largest chunk table: b^m ≤ 4096 entries (32 KiB).
 inline constexpr std::uint32_t max_chunk_size = 4096;
 
-/// K(b): the smallest K with b^K ≥ 2^64, the number of positions scrambled.
-/// In 64-bit steps (a scrambler built per pixel set computes it: the 128-bit
-/// loop was most of base 2's construction).
-constexpr unsigned digit_count(std::uint32_t base) noexcept {
+/// K(b) by powers of b in 64 bits.
+constexpr unsigned digit_count_by_powers(std::uint32_t base) noexcept {
   if ((base & (base - 1)) == 0) {  // b = 2^k: ⌈64 / k⌉
     const auto k = static_cast<unsigned>(std::countr_zero(base));
     return (64 + k - 1) / k;
@@ -73,6 +74,20 @@ constexpr unsigned digit_count(std::uint32_t base) noexcept {
   unsigned count = 1;  // b^count ≤ 2^64 − 1 < b^K, and b^K ≠ 2^64 for such b
   for (std::uint64_t power = base; power <= ~std::uint64_t{0} / base; power *= base) ++count;
   return count + 1;
+}
+
+/// K(b) of the bases below 256, tabulated at compile time.
+inline constexpr std::array<std::uint8_t, 256> small_digit_counts = [] {
+  std::array<std::uint8_t, 256> counts{};
+  for (std::uint32_t b = 2; b < counts.size(); ++b) counts[b] = static_cast<std::uint8_t>(digit_count_by_powers(b));
+  return counts;
+}();
+
+/// K(b): the smallest K with b^K ≥ 2^64, the number of positions scrambled
+/// (a scrambler bound per pixel set computes it: a loop of up to 41 steps
+/// was a large part of its construction in base 3).
+constexpr unsigned digit_count(std::uint32_t base) noexcept {
+  return base < small_digit_counts.size() ? small_digit_counts[base] : digit_count_by_powers(base);
 }
 
 /// m(b): positions per chunk, the largest m ≥ 1 with b^m ≤ 4096.
@@ -99,6 +114,20 @@ inline const std::vector<u128>& digit_weights(std::uint32_t base) {
   if (inserted)
     for (unsigned j = 0; j < digit_count(base); ++j) entry->second.push_back(digit_weight(base, j));
   return entry->second;
+}
+
+/// W_j for every position j < K(b), computed once per process and kept for
+/// its lifetime, shared by every thread: a scrambler bound per pixel set
+/// points at them instead of copying them.
+inline const u128* shared_digit_weights(std::uint32_t base) {
+  static std::array<std::atomic<const u128*>, max_base + 1> tables{};  // zero-initialized, no static constructor
+  std::atomic<const u128*>& slot = tables[base];
+  if (const u128* table = slot.load(std::memory_order_acquire)) return table;
+  auto fresh = std::make_unique<u128[]>(digit_count(base));
+  for (unsigned j = 0; j < digit_count(base); ++j) fresh[j] = digit_weight(base, j);
+  const u128* expected = nullptr;
+  if (slot.compare_exchange_strong(expected, fresh.get(), std::memory_order_acq_rel)) return fresh.release();
+  return expected;  // another thread's, equal
 }
 
 /// Exact n / d by one 64×64→128 multiplication for n < limit() (Lemire,
@@ -133,8 +162,9 @@ STRATUM_HOST_DEVICE constexpr double fraction_to_double(std::uint64_t fraction) 
 inline void require_digit_bases(const std::vector<std::uint32_t>& bases) {
   require(!bases.empty(), "d", 0, "a digit randomizer needs at least one dimension");
   for (std::uint32_t base : bases)
-    require(base >= 2 && base <= max_base, "base", base,
-            "digit randomizers take bases in [2, " + std::to_string(max_base) + "]");
+    if (base < 2 || base > max_base)  // the message built only when needed: scramblers are bound per pixel set
+      throw invalid_argument("base", std::to_string(base),
+                             "digit randomizers take bases in [2, " + std::to_string(max_base) + "]");
 }
 
 /// A randomizer that applies one permutation π_j of {0..b−1} per (dimension,

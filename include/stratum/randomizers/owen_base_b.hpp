@@ -39,7 +39,7 @@
 /// Device code (docs/gpu.md): a sample reads the keys and weights through a
 /// View (pointers, trivially copyable) that a kernel takes by value; view()
 /// points into the scrambler, view(copy) into copies that `copy` makes.
-#include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -54,8 +54,8 @@ namespace stratum {
 
 /// Nested uniform (Owen) scrambling of radical inverses in any base ("owen"):
 /// dimension `dim` uses base bases[dim]; sample(index, dim) depends only on
-/// (seed, dim, index). Construction computes a few keys per dimension (and
-/// copies the base's K(b) weights, b > 2); a sample allocates nothing.
+/// (seed, dim, index). Construction computes a few keys per dimension; a
+/// sample allocates nothing.
 class BaseBOwenScrambler {
  public:
   BaseBOwenScrambler(std::uint64_t seed, std::vector<std::uint32_t> bases) {
@@ -64,23 +64,17 @@ class BaseBOwenScrambler {
     dims_.reserve(bases.size());
     for (const std::uint32_t base : bases) {
       const unsigned positions = digits_detail::digit_count(base), per_word = word_digits(base);
-      dims_.push_back(
-          {base, positions, per_word, keys_.size(), weights_.size(), digits_detail::FastDivider(base), is_prime(base)});
+      dims_.push_back({base, positions, per_word, keys_.size(), digits_detail::FastDivider(base), is_prime(base),
+                       base == 2 ? nullptr : digits_detail::shared_digit_weights(base)});
       keys_.resize(keys_.size() + 1 + (positions + per_word - 1) / per_word);
-      if (base != 2) weights_.resize(weights_.size() + positions);
     }
     for (unsigned dim = 0; dim < bases.size(); ++dim) {
-      const Dimension& d = dims_[dim];
       // τ's key, then one key per prefix word; each pre-mixed as node_word
       // expects (the first step of hash64(key, prefix)).
       const std::uint64_t dimension_key = hash64(key, dim);
+      const std::size_t first = dims_[dim].first_key;
       const std::size_t end = dim + 1 < dims_.size() ? dims_[dim + 1].first_key : keys_.size();
-      for (std::size_t k = d.first_key; k < end; ++k)
-        keys_[k] = mix64(hash64_extend(dimension_key, k - d.first_key) + golden);
-      if (d.base != 2) {
-        const std::vector<digits_detail::u128>& weights = digits_detail::digit_weights(d.base);
-        std::copy(weights.begin(), weights.end(), weights_.begin() + static_cast<std::ptrdiff_t>(d.first_weight));
-      }
+      for (std::size_t k = first; k < end; ++k) keys_[k] = mix64(hash64_extend(dimension_key, k - first) + golden);
     }
   }
 
@@ -118,25 +112,23 @@ class BaseBOwenScrambler {
     unsigned positions;    // K(b)
     unsigned word_digits;  // D(b): shifts read from one prefix word
     std::size_t first_key;
-    std::size_t first_weight;
     digits_detail::FastDivider divider;
     bool prime;
+    const digits_detail::u128* weights;  // the base's W_j (b > 2), shared for the process
   };
 
  public:
   /// The per-sample path: the scrambler's arrays by pointer.
   class View {
    public:
-    STRATUM_HOST_DEVICE View(const Dimension* dims, const std::uint64_t* keys,
-                             const digits_detail::u128* weights) noexcept
-        : dims_(dims), keys_(keys), weights_(weights) {}
+    STRATUM_HOST_DEVICE View(const Dimension* dims, const std::uint64_t* keys) noexcept : dims_(dims), keys_(keys) {}
 
     /// The scrambled radical inverse of `index` as a 64-bit binary fraction.
     STRATUM_HOST_DEVICE std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
       const Dimension& d = dims_[dim];
       const std::uint64_t* keys = keys_ + d.first_key;
       if (d.base == 2) return fraction2(index, keys[1]);
-      const digits_detail::u128* weights = weights_ + d.first_weight;
+      const digits_detail::u128* weights = d.weights;
       const std::uint32_t b = d.base;
       digits_detail::u128 sum = 0;
       std::uint64_t prefix = 0, rest = index;
@@ -199,17 +191,27 @@ class BaseBOwenScrambler {
 
     const Dimension* dims_;
     const std::uint64_t* keys_;
-    const digits_detail::u128* weights_;
   };
 
   /// The per-sample path reading this object's arrays.
-  View view() const noexcept { return View(dims_.data(), keys_.data(), weights_.data()); }
+  View view() const noexcept { return View(dims_.data(), keys_.data()); }
   /// The per-sample path reading copies: copy(data, count) copies `count`
-  /// elements (trivially copyable) and returns the copy's address.
+  /// elements (trivially copyable) and returns the copy's address. The
+  /// weights are copied once for all dimensions, and the copied dimensions
+  /// point into that copy.
   template <class Copy>
   View view(Copy&& copy) const {
-    return View(copy(dims_.data(), dims_.size()), copy(keys_.data(), keys_.size()),
-                copy(weights_.data(), weights_.size()));
+    std::vector<digits_detail::u128> weights;
+    std::vector<std::size_t> offsets;
+    for (const Dimension& d : dims_) {
+      offsets.push_back(weights.size());
+      if (d.weights) weights.insert(weights.end(), d.weights, d.weights + d.positions);
+    }
+    const digits_detail::u128* copied = weights.empty() ? nullptr : copy(weights.data(), weights.size());
+    std::vector<Dimension> dims = dims_;
+    for (std::size_t k = 0; k < dims.size(); ++k)
+      if (dims[k].weights) dims[k].weights = copied + offsets[k];
+    return View(copy(dims.data(), dims.size()), copy(keys_.data(), keys_.size()));
   }
 
  private:
@@ -220,12 +222,20 @@ class BaseBOwenScrambler {
   }
 
   /// D(b): 64 in base 2 (a word's bits), else the largest D ≥ 1 with b^D ≤ 2^30.
-  static constexpr unsigned word_digits(std::uint32_t base) noexcept {
+  static constexpr unsigned word_digits_by_powers(std::uint32_t base) noexcept {
     if (base == 2) return 64;
     if (base > (1u << 15)) return 1;
     unsigned count = 1;
     for (std::uint64_t p = base; p * base <= (std::uint64_t{1} << 30); p *= base) ++count;
     return count;
+  }
+  static unsigned word_digits(std::uint32_t base) noexcept {
+    static constexpr std::array<std::uint8_t, 64> small = [] {  // the common bases without the loop
+      std::array<std::uint8_t, 64> counts{};
+      for (std::uint32_t b = 2; b < counts.size(); ++b) counts[b] = static_cast<std::uint8_t>(word_digits_by_powers(b));
+      return counts;
+    }();
+    return base < small.size() ? small[base] : word_digits_by_powers(base);
   }
 
   STRATUM_HOST_DEVICE static constexpr std::uint64_t power_of(std::uint64_t base, unsigned exponent) noexcept {
@@ -301,7 +311,6 @@ class BaseBOwenScrambler {
 
   std::vector<Dimension> dims_;
   std::vector<std::uint64_t> keys_;
-  std::vector<digits_detail::u128> weights_;
 };
 
 }  // namespace stratum

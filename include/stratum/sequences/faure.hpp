@@ -74,6 +74,12 @@ class Faure {
 
   /// Σ_r y_r b^r with y = C_dim · (digits of index) mod b, r < R(b).
   std::uint64_t digit_word(std::uint64_t index, unsigned dim) const noexcept {
+    if (base_ == 2) {  // y = C·a over GF(2): the columns of the index's 1 bits, xor-ed (as Sobol's)
+      const std::uint64_t* columns = columns2_.data() + std::size_t{dim} * 64;
+      std::uint64_t word = 0;
+      for (; index != 0; index &= index - 1) word ^= columns[countr_zero64(index)];
+      return word;
+    }
     // Quotients by b through its reciprocal (radical_inverse_reciprocal),
     // exact below 2^(64 − ⌈log2 b⌉): the row sums always are, an index
     // mostly (a renderer's are small); a hardware division above.
@@ -126,6 +132,11 @@ class Faure {
           matrices_[(static_cast<std::size_t>(j) * rows + r) * cols + c] =
               static_cast<std::uint32_t>(std::uint64_t{binomial[c * cols + r]} * powers[c - r] % base_);
     }
+    if (base_ != 2) return;
+    columns2_.assign(static_cast<std::size_t>(dimensions_) * 64, 0);  // R = K = 64
+    for (unsigned j = 0; j < dimensions_; ++j)
+      for (unsigned c = 0; c < 64; ++c)
+        for (unsigned r = 0; r <= c; ++r) columns2_[std::size_t{j} * 64 + c] |= std::uint64_t{generator(j, r, c)} << r;
   }
 
   unsigned dimensions_;
@@ -134,6 +145,7 @@ class Faure {
   unsigned index_digits_ = 0;
   unsigned output_digits_ = 0;
   std::vector<std::uint32_t> matrices_;  // dimensions × R × K, row-major per dimension
+  std::vector<std::uint64_t> columns2_;  // base 2: each column as a word (bit r: row r), dimensions × 64
 };
 
 }  // namespace stratum
