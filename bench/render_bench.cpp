@@ -16,7 +16,9 @@
 // The second argument picks the pixel sampler: random, sobol, jittered and
 // pmj02 take the PixelSampler's direct paths, halton (permute) its
 // table-free path (the permutations a set needs, built per pixel and
-// dimension and per shadow-ray array; the same points as the registry).
+// dimension and per shadow-ray array; the same points as the registry);
+// faure and halton:owen (exact base-b Owen scrambling) draw through their
+// registry generators, bound per pixel and dimension and per array.
 //
 // Part of stratum_bench only when the renderer is built (bench/CMakeLists.txt
 // leaves it out otherwise, since it needs stratum_render and Embree).
@@ -47,14 +49,21 @@ using namespace stratum::render;
 constexpr int kSize = 64;
 constexpr std::uint32_t kSpp = 4, kShadow = 4;
 
-constexpr std::array<const char*, 5> kSamplers = {"random", "sobol", "jittered", "pmj02", "halton"};
+/// Name and randomizer (empty: the sampler's default) of each sampler argument.
+constexpr std::array<std::array<const char*, 2>, 7> kSamplers = {
+    {{"random", ""}, {"sobol", ""}, {"jittered", ""}, {"pmj02", ""}, {"halton", ""}, {"faure", ""}, {"halton", "owen"}}};
 
-RenderSettings bench_settings(unsigned threads, const char* sampler = "random") {
+std::string sampler_label(std::size_t k) {
+  return std::string(kSamplers[k][0]) + (*kSamplers[k][1] ? std::string(":") + kSamplers[k][1] : "");
+}
+
+RenderSettings bench_settings(unsigned threads, std::size_t sampler = 0) {
   RenderSettings s;
   s.integrator = "direct";
   s.light_strategy = "area";
   s.light_samples = kShadow;
-  s.sampler.sampler = sampler;
+  s.sampler.sampler = kSamplers[sampler][0];
+  s.sampler.randomize = kSamplers[sampler][1];
   s.sampler.spp = kSpp;
   s.sampler.seed = 1;
   s.passes = 1;
@@ -298,8 +307,8 @@ std::size_t trace_wrapped(const Accelerator& accelerator, const Recorded& rays, 
 
 void BM_DirectVsBareEmbree(benchmark::State& state) {
   const unsigned threads = unsigned(state.range(0));
-  const char* sampler = kSamplers[std::size_t(state.range(1))];
-  state.SetLabel(std::string(sampler) + (state.range(2) == 1 ? " mesh-sphere" : ""));
+  const auto sampler = std::size_t(state.range(1));
+  state.SetLabel(sampler_label(sampler) + (state.range(2) == 1 ? " mesh-sphere" : ""));
   const Scene scene = bench_scene(int(state.range(2)));
   const RenderSettings settings = bench_settings(threads, sampler);
   const Recorded rays = record(scene, settings);
@@ -362,6 +371,7 @@ void BM_RenderSetup(benchmark::State& state) {
 BENCHMARK(BM_DirectVsBareEmbree)
     ->ArgsProduct({{1, 2}, {0, 1, 2, 3, 4}, {0}})
     ->ArgsProduct({{1}, {0, 1, 2, 3}, {1}})
+    ->ArgsProduct({{1}, {5, 6}, {0}})
     ->ArgNames({"threads", "sampler", "scene"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
