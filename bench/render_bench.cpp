@@ -50,8 +50,13 @@ constexpr int kSize = 64;
 constexpr std::uint32_t kSpp = 4, kShadow = 4;
 
 /// Name and randomizer (empty: the sampler's default) of each sampler argument.
-constexpr std::array<std::array<const char*, 2>, 7> kSamplers = {
-    {{"random", ""}, {"sobol", ""}, {"jittered", ""}, {"pmj02", ""}, {"halton", ""}, {"faure", ""}, {"halton", "owen"}}};
+constexpr std::array<std::array<const char*, 2>, 7> kSamplers = {{{"random", ""},
+                                                                  {"sobol", ""},
+                                                                  {"jittered", ""},
+                                                                  {"pmj02", ""},
+                                                                  {"halton", ""},
+                                                                  {"faure", ""},
+                                                                  {"halton", "owen"}}};
 
 std::string sampler_label(std::size_t k) {
   return std::string(kSamplers[k][0]) + (*kSamplers[k][1] ? std::string(":") + kSamplers[k][1] : "");

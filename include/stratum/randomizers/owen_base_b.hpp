@@ -58,23 +58,24 @@ namespace stratum {
 /// sample allocates nothing.
 class BaseBOwenScrambler {
  public:
-  BaseBOwenScrambler(std::uint64_t seed, std::vector<std::uint32_t> bases) {
+  BaseBOwenScrambler(std::uint64_t seed, const std::vector<std::uint32_t>& bases) {
     digits_detail::require_digit_bases(bases);
     const std::uint64_t key = hash64(seed, 0x6f77656e62ULL /* "owenb" */);
     dims_.reserve(bases.size());
+    std::size_t key_count = 0;
     for (const std::uint32_t base : bases) {
       const unsigned positions = digits_detail::digit_count(base), per_word = word_digits(base);
-      dims_.push_back({base, positions, per_word, keys_.size(), digits_detail::FastDivider(base), is_prime(base),
+      dims_.push_back({base, positions, per_word, key_count, digits_detail::FastDivider(base), is_prime(base),
                        base == 2 ? nullptr : digits_detail::shared_digit_weights(base)});
-      keys_.resize(keys_.size() + 1 + (positions + per_word - 1) / per_word);
+      key_count += 1 + (positions + per_word - 1) / per_word;
     }
+    keys_.resize(key_count);
     for (unsigned dim = 0; dim < bases.size(); ++dim) {
-      // τ's key, then one key per prefix word; each pre-mixed as node_word
-      // expects (the first step of hash64(key, prefix)).
+      // τ's key, then one key per prefix word: hash64(key, dim, k).
       const std::uint64_t dimension_key = hash64(key, dim);
       const std::size_t first = dims_[dim].first_key;
       const std::size_t end = dim + 1 < dims_.size() ? dims_[dim + 1].first_key : keys_.size();
-      for (std::size_t k = first; k < end; ++k) keys_[k] = mix64(hash64_extend(dimension_key, k - first) + golden);
+      for (std::size_t k = first; k < end; ++k) keys_[k] = hash64_extend(dimension_key, k - first);
     }
   }
 
@@ -245,9 +246,9 @@ class BaseBOwenScrambler {
     return result;
   }
 
-  // hash64(pre-mixed key, prefix).
-  STRATUM_HOST_DEVICE static constexpr std::uint64_t node_word(std::uint64_t mixed_key, std::uint64_t prefix) noexcept {
-    return mix64((mixed_key ^ (prefix * 0xd1342543de82ef95ULL + 0x632be59bd9b4e019ULL)) + golden);
+  // A word of (key, prefix): hash64_extend(key, prefix).
+  STRATUM_HOST_DEVICE static constexpr std::uint64_t node_word(std::uint64_t key, std::uint64_t prefix) noexcept {
+    return hash64_extend(key, prefix);
   }
 
   // Digit t of `word` read as a base-b fraction, ⌊w·b^(t+1) / 2^64⌋ mod b,
