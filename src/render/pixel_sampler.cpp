@@ -78,7 +78,7 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
   // The validated choices and per-render constants; the caches start empty.
   keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
-  set_binder_ = other.set_binder_, array_binder_ = other.array_binder_;
+  set_binder_ = other.set_binder_, array_binder_ = other.array_binder_, continued_binder_ = other.continued_binder_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
   spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
@@ -260,6 +260,20 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     std::vector<double> points(2 * std::size_t{n});
     tables_->fill(seed, start, n, points.data());
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {points[2 * i], points[2 * i + 1]};
+    return;
+  }
+  if (set_binder_ && arrays_continue_ && (offset_ + settings_.spp) * std::uint64_t{n} <= continued_max_points) {
+    if (continued_arrays_.size() <= dimension) continued_arrays_.resize(dimension + 1);
+    ContinuedArray& cached = continued_arrays_[dimension];
+    if (cached.stamp != pixel_stamp_ || cached.n != n) {
+      const std::uint64_t points = (offset_ + settings_.spp) * std::uint64_t{n};  // indices 0 … points − 1
+      if (!continued_binder_ || continued_binder_->count() != points)
+        continued_binder_.emplace(settings_.sampler, set_request(seed, points, 0));
+      cached.generator = continued_binder_->bind(seed, 0);
+      cached.stamp = pixel_stamp_, cached.n = n;
+    }
+    const PointGenerator& generator = cached.generator;
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;
   }
   if (set_binder_) {

@@ -270,6 +270,20 @@ TEST(PixelSampler, EverySamplerDrivesTheRendererOrIsRefusedWithTheReason) {
       const PointSet set = generate_points(info.name, request);
       EXPECT_EQ(p[0], set(index, 0)) << info.name;
       EXPECT_EQ(p[1], set(index, 1)) << info.name;
+      // The shadow-ray array (dimension 1): a progressive sampler's points
+      // 4·index … 4·index + 3 of the pixel's continued set (its generator
+      // bound once per pixel), a pattern's own 4-point set of this sample.
+      const bool continued = info.flags.progressive;
+      SamplerRequest arrays;
+      arrays.n = continued ? 4 * (index + 1) : 4;
+      arrays.d = d;
+      arrays.seed = PixelSampler::array_seed_for_test(7, 3, 2, 1, continued ? PixelSampler::tag_continued : index);
+      const PointSet array_set = generate_points(info.name, arrays);
+      const std::uint32_t first = continued ? 4 * index : 0;
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(array[i][0], array_set(first + i, 0)) << info.name << " array point " << i;
+        EXPECT_EQ(array[i][1], array_set(first + i, 1)) << info.name << " array point " << i;
+      }
     }
   }
   EXPECT_GE(driven, 25);

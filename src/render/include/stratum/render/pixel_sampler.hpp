@@ -177,6 +177,19 @@ class PixelSampler {
   /// set where the sampler draws through its generator), and the shadow-ray
   /// arrays' for the last array count.
   std::optional<GeneratorBinder> set_binder_, array_binder_;
+  /// A progressive sampler's shadow-ray arrays through its generator: one
+  /// seed per pixel and array dimension (tag_continued) for all its samples,
+  /// so the generator is bound once per pixel and dimension, not per sample,
+  /// for (offset + spp)·n ≤ continued_max_points points (the binder's request
+  /// covers them all; beyond, a binding per sample as for a pattern).
+  struct ContinuedArray {
+    PointGenerator generator;
+    std::uint64_t stamp = 0;  ///< the pixel it was bound for (pixel_stamp_)
+    std::uint32_t n = 0;      ///< points per array
+  };
+  std::vector<ContinuedArray> continued_arrays_;
+  std::optional<GeneratorBinder> continued_binder_;
+  static constexpr std::uint64_t continued_max_points = std::uint64_t{1} << 20;
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
                 std::uint64_t start = 0) const;
