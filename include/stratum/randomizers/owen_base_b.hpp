@@ -66,7 +66,8 @@ class BaseBOwenScrambler {
     for (const std::uint32_t base : bases) {
       const unsigned positions = digits_detail::digit_count(base), per_word = word_digits(base);
       dims_.push_back({base, positions, per_word, key_count, digits_detail::FastDivider(base), is_prime(base),
-                       base == 2 ? nullptr : digits_detail::shared_digit_weights(base)});
+                       base == 2 ? nullptr : digits_detail::shared_digit_weights(base),
+                       base == 2 ? 0 : power_of(base, per_word)});
       key_count += 1 + (positions + per_word - 1) / per_word;
     }
     keys_.resize(key_count);
@@ -116,6 +117,7 @@ class BaseBOwenScrambler {
     digits_detail::FastDivider divider;
     bool prime;
     const digits_detail::u128* weights;  // the base's W_j (b > 2), shared for the process
+    std::uint64_t word_power;            // b^D (b > 2)
   };
 
  public:
@@ -133,18 +135,19 @@ class BaseBOwenScrambler {
       const std::uint32_t b = d.base;
       digits_detail::u128 sum = 0;
       std::uint64_t prefix = 0, rest = index;
-      std::uint64_t power = 1;       // b^j modulo 2^64: only multiplies digits 0 once it wraps
-      unsigned j = 0, t = 0;         // position, and its digit in its prefix word
-      std::uint64_t word_power = 1;  // b^t
+      std::uint64_t power = 1;                   // b^j modulo 2^64: only multiplies digits 0 once it wraps
+      unsigned j = 0, t = 0;                     // position, and its digit in its prefix word
+      std::uint64_t word_power = 1;              // b^t
+      const std::uint64_t* word_key = keys + 1;  // of word ⌊j / D⌋
       std::uint64_t word = 0;
       bool fresh = false;  // `word` is word ⌊j / D⌋ of `prefix`
       // The index's digits, up to its last nonzero one, one at a time.
       for (; rest != 0; ++j, ++t, power *= b, word_power *= b) {
-        if (t == d.word_digits) t = 0, word_power = 1, fresh = false;
+        if (t == d.word_digits) t = 0, word_power = 1, ++word_key, fresh = false;
         const std::uint64_t next = d.divider.quotient(rest);
         const auto digit = static_cast<std::uint32_t>(rest - next * b);
         rest = next;
-        if (!fresh) word = node_word(keys[1 + j / d.word_digits], prefix), fresh = true;
+        if (!fresh) word = node_word(*word_key, prefix), fresh = true;
         const std::uint32_t shift = word_digit(d, word, word_power * b);
         const std::uint32_t image_j = digit == 0 ? shift : image(d, keys[0], j, prefix, digit, shift);
         sum += static_cast<digits_detail::u128>(image_j) * weights[j];
@@ -154,16 +157,14 @@ class BaseBOwenScrambler {
       // the shifts, the rest of each word's digits as one integer,
       // ⌊frac(w·b^t / 2^64)·b^(c−t)⌋ for digits t..c−1 (their weights sum
       // to that integer times the weight of digit c−1, up to the floors).
-      while (j < d.positions) {
-        if (t == d.word_digits) t = 0, word_power = 1, fresh = false;
-        if (!fresh) word = node_word(keys[1 + j / d.word_digits], prefix);
-        const unsigned first = j - t;  // the word's first position
+      if (t == d.word_digits) t = 0, word_power = 1, ++word_key;
+      for (unsigned first = j - t; first < d.positions; first += d.word_digits, t = 0, word_power = 1, ++word_key) {
         const unsigned count = d.positions - first < d.word_digits ? d.positions - first : d.word_digits;
-        const auto below = static_cast<std::uint64_t>(static_cast<digits_detail::u128>(word) * word_power);
-        const auto digits =
-            static_cast<std::uint64_t>((static_cast<digits_detail::u128>(below) * power_of(b, count - t)) >> 64);
+        const std::uint64_t w = node_word(*word_key, prefix);
+        const auto below = static_cast<std::uint64_t>(static_cast<digits_detail::u128>(w) * word_power);
+        const std::uint64_t span = count == d.word_digits && t == 0 ? d.word_power : power_of(b, count - t);
+        const auto digits = static_cast<std::uint64_t>((static_cast<digits_detail::u128>(below) * span) >> 64);
         sum += static_cast<digits_detail::u128>(digits) * weights[first + count - 1];
-        j = first + count, t = d.word_digits, fresh = false;
       }
       return static_cast<std::uint64_t>(sum >> 64);
     }
@@ -307,7 +308,9 @@ class BaseBOwenScrambler {
       tau = 1 + x;
       if (d.prime) m = 1 + static_cast<std::uint64_t>((static_cast<digits_detail::u128>(w) * (b - 1)) >> 64);
     }
-    return static_cast<std::uint32_t>((m * tau + shift) % b);
+    if (m == 1) return tau + shift < b ? tau + shift : tau + shift - b;
+    const std::uint64_t x = m * tau + shift;  // < b² < 2^33: the divider's exact range
+    return static_cast<std::uint32_t>(x - d.divider.quotient(x) * b);
   }
 
   std::vector<Dimension> dims_;
