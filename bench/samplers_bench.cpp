@@ -9,6 +9,7 @@
 #include <boost/random/sobol.hpp>
 
 #include "stratum/randomizers/base2.hpp"
+#include "stratum/randomizers/owen_base_b.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
@@ -74,6 +75,25 @@ void sobol_random_access(benchmark::State& state, bool bound) {
       benchmark::Counter(dims, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// Random access to exact base-b Owen scrambling (faure, halton:owen draw
+// through it): one coordinate in base b at indices below 2^k in a scrambled
+// order (k·odd mod 2^k), as a renderer's per-pixel sets (k = 4) or a long
+// sequence (k = 16) read it; random-access/sobol-owen-hash is the peer.
+void owen_base_b_random_access(benchmark::State& state) {
+  const auto base = static_cast<std::uint32_t>(state.range(0));
+  const std::uint64_t mask = (std::uint64_t{1} << state.range(1)) - 1;
+  const stratum::BaseBOwenScrambler owen(7, {base});
+  std::uint64_t k = 0;
+  double sum = 0;
+  for (auto _ : state) {
+    sum += owen.sample((k * 0x9e3779b97f4a7c15ULL) & mask, 0);
+    ++k;
+  }
+  benchmark::DoNotOptimize(sum);
+  state.counters["ns_per_coord"] =
+      benchmark::Counter(1, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 // Peer: Boost.Random's Sobol' engine (Gray-code, unscrambled) writing the same
 // buffer as the registry does, converted to double.
 void boost_sobol_bulk(benchmark::State& state) {
@@ -119,6 +139,9 @@ int register_all() {
   benchmark::RegisterBenchmark("poisson-disk/maximal-2d/r=0.01", poisson_disk_maximal_2d)
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("random-access/sobol-owen-hash/bound", sobol_random_access, true);
+  benchmark::RegisterBenchmark("random-access/owen-base-b", owen_base_b_random_access)
+      ->ArgsProduct({{2, 3, 29}, {4, 16}})
+      ->ArgNames({"base", "log2_indices"});
   for (unsigned threads : {1u, 2u})
     benchmark::RegisterBenchmark(("registry-threads/sobol/owen-hash/" + std::to_string(threads)).c_str(),
                                  registry_sampler, "sobol", "owen-hash", threads)
