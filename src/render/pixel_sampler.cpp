@@ -6,6 +6,7 @@
 #include "stratum/patterns/random.hpp"
 #include "stratum/patterns/strata.hpp"
 #include "stratum/sequences/pmj.hpp"
+#include "stratum/memory.hpp"
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
@@ -79,6 +80,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   // The validated choices and per-render constants; the caches start empty.
   keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
   set_binder_ = other.set_binder_, array_binder_ = other.array_binder_, continued_binder_ = other.continued_binder_;
+  refused_ = other.refused_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
   spacetime_ = other.spacetime_;
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
@@ -262,13 +264,19 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {points[2 * i], points[2 * i + 1]};
     return;
   }
-  if (set_binder_ && arrays_continue_ && (offset_ + settings_.spp) * std::uint64_t{n} <= continued_max_points) {
+  const std::uint64_t continued_points = (offset_ + settings_.spp) * std::uint64_t{n};  // indices 0 … this − 1
+  if (set_binder_ && arrays_continue_ && continued_points <= continued_max_points && continued_points != refused_) {
     if (continued_arrays_.size() <= dimension) continued_arrays_.resize(dimension + 1);
     ContinuedArray& cached = continued_arrays_[dimension];
     if (cached.stamp != pixel_stamp_ || cached.n != n) {
-      const std::uint64_t points = (offset_ + settings_.spp) * std::uint64_t{n};  // indices 0 … points − 1
-      if (!continued_binder_ || continued_binder_->count() != points)
-        continued_binder_.emplace(settings_.sampler, set_request(seed, points, 0));
+      if (!continued_binder_ || continued_binder_->count() != continued_points) {
+        try {
+          continued_binder_.emplace(settings_.sampler, set_request(seed, continued_points, 0));
+        } catch (const memory_error&) {  // the request's memory check under a low limit: bind per sample
+          continued_binder_.reset(), refused_ = continued_points;
+          return get_2d_array_slow(seed, dimension, n, start, out);
+        }
+      }
       cached.generator = continued_binder_->bind(seed, 0);
       cached.stamp = pixel_stamp_, cached.n = n;
     }

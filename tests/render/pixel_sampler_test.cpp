@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <vector>
@@ -347,6 +349,28 @@ TEST(PixelSampler, JitteredArraysOfANonSquareCountAreRefusedByName) {
   } catch (const invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("n = 3"), std::string::npos) << e.what();
   }
+}
+
+TEST(PixelSampler, ContinuedArraysUnderALowMemoryLimitBindPerSample) {
+  // A progressive sampler's arrays through its generator are bound once per
+  // pixel by a request for all the pixel's (spp · n) array points, which the
+  // memory guard checks although they are never allocated: under a limit
+  // below them (1024 · 16 · 2 doubles = 256 KiB > 100 kB) the sampler binds
+  // per sample instead and draws the same points.
+  std::vector<std::array<double, 2>> unlimited, limited;
+  for (const bool limit : {false, true}) {
+    if (limit) ::setenv("STRATUM_MEMORY_LIMIT", "100000", 1);
+    PixelSampler sampler(settings("faure", 1024));
+    for (std::uint32_t index : {0u, 1u, 1023u}) {
+      sampler.start_pixel_sample(2, 5, index);
+      std::array<double, 2> array[16];
+      sampler.get_2d_array(16, array);
+      (limit ? limited : unlimited).insert((limit ? limited : unlimited).end(), array, array + 16);
+    }
+    ::unsetenv("STRATUM_MEMORY_LIMIT");
+  }
+  ASSERT_EQ(limited.size(), 48u);
+  EXPECT_EQ(limited, unlimited);
 }
 
 }  // namespace

@@ -181,7 +181,8 @@ class PixelSampler {
   /// seed per pixel and array dimension (tag_continued) for all its samples,
   /// so the generator is bound once per pixel and dimension, not per sample,
   /// for (offset + spp)·n ≤ continued_max_points points (the binder's request
-  /// covers them all; beyond, a binding per sample as for a pattern).
+  /// covers them all; beyond, or where its memory check refuses them, a
+  /// binding per sample as for a pattern). Never allocates those points.
   struct ContinuedArray {
     PointGenerator generator;
     std::uint64_t stamp = 0;  ///< the pixel it was bound for (pixel_stamp_)
@@ -189,7 +190,8 @@ class PixelSampler {
   };
   std::vector<ContinuedArray> continued_arrays_;
   std::optional<GeneratorBinder> continued_binder_;
-  static constexpr std::uint64_t continued_max_points = std::uint64_t{1} << 20;
+  std::uint64_t refused_ = 0;  ///< a point count whose request the memory check refused (0: none)
+  static constexpr std::uint64_t continued_max_points = std::uint64_t{1} << 16;  // ≤ 1.5 MiB by the request's check
   /// Points start … start + n − 1 of the sampler's set for `seed` (start > 0: progressive samplers only).
   PointSet draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
                 std::uint64_t start = 0) const;
