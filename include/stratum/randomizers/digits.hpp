@@ -44,7 +44,6 @@
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -90,12 +89,15 @@ constexpr unsigned digit_count(std::uint32_t base) noexcept {
   return base < small_digit_counts.size() ? small_digit_counts[base] : digit_count_by_powers(base);
 }
 
-/// m(b): positions per chunk, the largest m ≥ 1 with b^m ≤ 4096.
-constexpr unsigned chunk_digits(std::uint32_t base) noexcept {
+/// The largest m ≥ 1 with b^m ≤ bound (bound ≤ 2^32: no overflow).
+constexpr unsigned digits_within(std::uint32_t base, std::uint64_t bound) noexcept {
   unsigned m = 1;
-  for (std::uint64_t size = base; size * base <= max_chunk_size; size *= base) ++m;
+  for (std::uint64_t size = base; size * base <= bound; size *= base) ++m;
   return m;
 }
+
+/// m(b): positions per chunk, the largest m ≥ 1 with b^m ≤ 4096.
+constexpr unsigned chunk_digits(std::uint32_t base) noexcept { return digits_within(base, max_chunk_size); }
 
 /// W_j = ⌊2^128 / b^(j+1)⌋, the 128-bit weight of position j.
 constexpr u128 digit_weight(std::uint32_t base, unsigned position) noexcept {
@@ -105,20 +107,10 @@ constexpr u128 digit_weight(std::uint32_t base, unsigned position) noexcept {
   return all_ones / power + (all_ones % power == power - 1 ? 1 : 0);
 }
 
-/// W_j for every position j < K(b), computed once per base and thread: each
-/// is a 128-bit division, which made up most of a scrambler's construction
-/// when a renderer builds one per pixel and dimension.
-inline const std::vector<u128>& digit_weights(std::uint32_t base) {
-  thread_local std::unordered_map<std::uint32_t, std::vector<u128>> cache;
-  auto [entry, inserted] = cache.try_emplace(base);
-  if (inserted)
-    for (unsigned j = 0; j < digit_count(base); ++j) entry->second.push_back(digit_weight(base, j));
-  return entry->second;
-}
-
 /// W_j for every position j < K(b), computed once per process and kept for
-/// its lifetime, shared by every thread: a scrambler bound per pixel set
-/// points at them instead of copying them.
+/// its lifetime, shared by every thread (each is a 128-bit division, which
+/// made up most of a scrambler's construction when a renderer builds one per
+/// pixel set): a scrambler points at them or copies them.
 inline const u128* shared_digit_weights(std::uint32_t base) {
   static std::array<std::atomic<const u128*>, max_base + 1> tables{};  // zero-initialized, no static constructor
   std::atomic<const u128*>& slot = tables[base];
@@ -327,8 +319,8 @@ class PositionalDigitScrambler {
     std::uint64_t size = 1;
     for (unsigned t = 0; t < d.digits_per_chunk; ++t) size *= base;
     d.divider = FastDivider(size);
-    const std::vector<u128>& weights = digit_weights(base);
-    weights_.insert(weights_.end(), weights.begin(), weights.end());
+    const u128* weights = shared_digit_weights(base);
+    weights_.insert(weights_.end(), weights, weights + d.positions);
     dims_.push_back(d);
 
     // Tabulated entries per chunk: all b^m while the index range spans the

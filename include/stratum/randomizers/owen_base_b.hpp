@@ -226,10 +226,7 @@ class BaseBOwenScrambler {
   /// D(b): 64 in base 2 (a word's bits), else the largest D ≥ 1 with b^D ≤ 2^30.
   static constexpr unsigned word_digits_by_powers(std::uint32_t base) noexcept {
     if (base == 2) return 64;
-    if (base > (1u << 15)) return 1;
-    unsigned count = 1;
-    for (std::uint64_t p = base; p * base <= (std::uint64_t{1} << 30); p *= base) ++count;
-    return count;
+    return digits_detail::digits_within(base, std::uint64_t{1} << 30);
   }
   static unsigned word_digits(std::uint32_t base) noexcept {
     static constexpr std::array<std::uint8_t, 64> small = [] {  // the common bases without the loop

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "stratum/randomizers/digits.hpp"
 #include "stratum/sequences/radical_inverse.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/real.hpp"
@@ -41,6 +42,7 @@ class Faure {
             "Faure supports 1 to " + std::to_string(max_dimensions) + " dimensions");
     base_ = base_for(dimensions);
     reciprocal_ = radical_inverse_reciprocal(base_);
+    divider_ = digits_detail::FastDivider(base_);
     index_digits_ = 0;
     for (unsigned __int128 power = 1; power < (static_cast<unsigned __int128>(1) << 64); power *= base_)
       ++index_digits_;
@@ -80,18 +82,12 @@ class Faure {
       for (; index != 0; index &= index - 1) word ^= columns[countr_zero64(index)];
       return word;
     }
-    // Quotients by b through its reciprocal (radical_inverse_reciprocal),
-    // exact below 2^(64 − ⌈log2 b⌉): the row sums always are, an index
-    // mostly (a renderer's are small); a hardware division above.
-    const std::uint64_t exact_below = std::uint64_t{1} << (64 - bit_width64(base_ - 1));
-    auto quotient = [&](std::uint64_t n) {
-      return n < exact_below ? static_cast<std::uint64_t>((static_cast<unsigned __int128>(n) * reciprocal_) >> 64)
-                             : n / base_;
-    };
+    // Quotients by b by multiplication (exact below 2^(64 − ⌈log2 b⌉): the
+    // row sums always, an index mostly; a hardware division above).
     std::uint32_t digits[64];
     unsigned count = 0;
     for (; index != 0; ++count) {
-      const std::uint64_t next = quotient(index);
+      const std::uint64_t next = divider_.quotient(index);
       digits[count] = static_cast<std::uint32_t>(index - next * base_);
       index = next;
     }
@@ -99,9 +95,9 @@ class Faure {
     std::uint64_t word = 0;
     for (unsigned r = count < output_digits_ ? count : output_digits_; r-- > 0;) {
       const std::uint32_t* row = matrix + static_cast<std::size_t>(r) * index_digits_;
-      std::uint64_t sum = 0;  // ≤ 64 terms below b² ≤ 2^21 each: < 2^27, below exact_below for b ≤ 2^37
+      std::uint64_t sum = 0;  // ≤ 64 terms below b² ≤ 2^21 each: < 2^27, in the divider's exact range
       for (unsigned c = r; c < count; ++c) sum += static_cast<std::uint64_t>(row[c]) * digits[c];
-      word = word * base_ + (sum - quotient(sum) * base_);
+      word = word * base_ + (sum - divider_.quotient(sum) * base_);
     }
     return word;
   }
@@ -142,6 +138,7 @@ class Faure {
   unsigned dimensions_;
   std::uint32_t base_ = 2;
   std::uint64_t reciprocal_ = 0;
+  digits_detail::FastDivider divider_;
   unsigned index_digits_ = 0;
   unsigned output_digits_ = 0;
   std::vector<std::uint32_t> matrices_;  // dimensions × R × K, row-major per dimension
