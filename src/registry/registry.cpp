@@ -226,12 +226,23 @@ GeneratorBinder::GeneratorBinder(std::string_view name, const SamplerRequest& re
           "has no per-point generator: its points are made as a whole set (generate_points)");
   require(request.n.has_value(), "n", "(none)", "a generator binder needs the set's n");
   request_ = resolved_request(*sampler_, request);
+  if (sampler_->seeded) seeded_ = sampler_->seeded(request_);
 }
 
 PointGenerator GeneratorBinder::bind(std::uint64_t seed, std::uint64_t start) {
   request_.seed = seed;
   request_.start = start;
   return sampler_->bind(request_);
+}
+
+SetBinder::SetBinder(std::string_view name, const SamplerRequest& request) : sampler_(&find_sampler(name)) {
+  require(request.n.has_value(), "n", "(none)", "a set binder needs the set's n");
+  request_ = resolved_request(*sampler_, request);
+}
+
+PointSet SetBinder::generate(std::uint64_t seed) {
+  request_.seed = seed;
+  return sampler_->generate(request_);
 }
 
 PointSet generate_points(std::string_view name, const SamplerRequest& request) {

@@ -5,6 +5,7 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "families.hpp"
 #include "stratum/randomizers/cranley_patterson.hpp"
@@ -182,8 +183,14 @@ std::vector<SamplerInfo> lattices() {
           [](const SamplerRequest& request) {
             const std::uint64_t n = *request.n;
             auto z = explicit_generator(request);
-            if (!z)
-              z = korobov_generator(n, search_korobov(n, request.d, param_gamma(request), request.threads), request.d);
+            if (!z) {  // the search's result depends on (n, d, gamma) only: done once per process (a renderer's set
+                       // per pixel and dimension would repeat it)
+              const double gamma = param_gamma(request);
+              const auto best = shared_construction<std::uint64_t>(std::tuple{n, request.d, gamma}, [&] {
+                return search_korobov(n, request.d, gamma, request.threads);
+              });
+              z = korobov_generator(n, *best, request.d);
+            }
             const Rank1Lattice lattice(n, std::span<const std::uint64_t>(z->data(), request.d));
             return fill_lattice(lattice, request);
           },

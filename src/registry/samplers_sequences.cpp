@@ -95,6 +95,30 @@ static auto with_digit_scrambler(const SamplerRequest& request, const std::vecto
   }
 }
 
+/// Base-b owen as a SeededGenerator: the scrambler's seed-independent part
+/// (bases, digit weights) built once, a seed's keys as the state.
+/// digits(index, dim) is the digit word the scrambler reads: the index for
+/// Halton, its word under the generator matrices for Faure.
+template <class Digits>
+class OwenSeeded final : public SeededGenerator {
+ public:
+  OwenSeeded(const std::vector<std::uint32_t>& bases, Digits digits)
+      : scrambler_(0, bases), digits_(std::move(digits)) {}
+  std::size_t state_words() const noexcept override { return scrambler_.key_count(); }
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
+    scrambler_.keys_for(seed, state, coordinates);
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    const BaseBOwenScrambler::View view = scrambler_.view(state);
+    for (unsigned j = 0; j < coordinates; ++j) out[j] = view.sample(digits_(index, j), j);
+  }
+
+ private:
+  BaseBOwenScrambler scrambler_;
+  Digits digits_;
+};
+
 /// out[k·stride] = scrambler.sample(first + k, dim) for k < count: the
 /// tabulated scramblers' fill where they have one.
 template <class Scrambler>
@@ -178,6 +202,13 @@ static PointGenerator bind_halton(const SamplerRequest& request) {
   return bind_rotated(halton_of)(request);
 }
 
+/// Halton's SeededGenerator under owen (the same points as bind_halton's).
+static std::shared_ptr<const SeededGenerator> seeded_halton(const SamplerRequest& request) {
+  if (request.randomizer != Randomizer::owen) return nullptr;
+  const auto index = [](std::uint64_t i, unsigned) { return i; };
+  return std::make_shared<const OwenSeeded<decltype(index)>>(halton_bases(request), index);
+}
+
 /// i/N as a 64-bit binary fraction, floor(i · 2^64 / N): exact at N = 2^k.
 static std::uint64_t fraction_bits(std::uint64_t i, std::uint64_t n) {
   return static_cast<std::uint64_t>((static_cast<unsigned __int128>(i) << 64) / n);
@@ -242,6 +273,15 @@ static PointGenerator bind_faure(const SamplerRequest& request) {
   return rotated_generator(request, shared);
 }
 
+/// Faure's SeededGenerator under owen (the same points as bind_faure's).
+static std::shared_ptr<const SeededGenerator> seeded_faure(const SamplerRequest& request) {
+  if (request.randomizer != Randomizer::owen) return nullptr;
+  const unsigned d = request.d;
+  const auto shared = shared_construction<Faure>(d, [d] { return Faure(d); });
+  const auto words = [shared](std::uint64_t i, unsigned j) { return shared->digit_word(i, j); };
+  return std::make_shared<const OwenSeeded<decltype(words)>>(std::vector<std::uint32_t>(d, shared->base()), words);
+}
+
 std::vector<SamplerInfo> sequences() {
   std::vector<SamplerInfo> list;
 
@@ -265,6 +305,7 @@ std::vector<SamplerInfo> sequences() {
       .count = requested_count,
       .generate = generate_halton,  // column fills of the tabulated scramblers
       .bind = bind_halton,
+      .seeded = seeded_halton,
       .pair_tables = [](Randomizer randomizer) -> std::optional<HaltonPairTables> {
         if (randomizer != Randomizer::permute) return std::nullopt;
         return HaltonPairTables();
@@ -307,6 +348,7 @@ std::vector<SamplerInfo> sequences() {
       .count = requested_count,
       .generate = nullptr,  // the registry fills sets from bind
       .bind = bind_faure,
+      .seeded = seeded_faure,
   });
 
   return list;

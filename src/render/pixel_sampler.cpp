@@ -80,6 +80,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   // The validated choices and per-render constants; the caches start empty.
   keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
   set_binder_ = other.set_binder_, array_binder_ = other.array_binder_, continued_binder_ = other.continued_binder_;
+  set_maker_ = other.set_maker_, array_maker_ = other.array_maker_;
   refused_ = other.refused_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
   spacetime_ = other.spacetime_;
@@ -154,7 +155,14 @@ void PixelSampler::start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uin
 const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   if (sets_.size() <= dimension) sets_.resize(dimension + 1);
   PointSet& set = sets_[dimension];
-  if (set.n == 0) set = draw(settings_.sampler, settings_.spp, 2, hash64(pixel_key_, dimension), offset_);
+  if (set.n != 0) return set;
+  const std::uint64_t seed = hash64(pixel_key_, dimension);
+  if (keyed_ || tables_) {
+    set = draw(settings_.sampler, settings_.spp, 2, seed, offset_);
+  } else {
+    if (!set_maker_) set_maker_.emplace(settings_.sampler, set_request(seed, settings_.spp, offset_));
+    set = set_maker_->generate(seed);
+  }
   return set;
 }
 
@@ -224,6 +232,20 @@ std::array<double, 2> PixelSampler::table_point_miss(std::uint32_t dimension, un
 }
 
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
+  if (set_binder_ && set_binder_->seeded()) {
+    const SeededGenerator& generator = *set_binder_->seeded();
+    const std::uint32_t dimension = dimension_++;
+    if (seeded_sets_.size() <= dimension) seeded_sets_.resize(dimension + 1);
+    SeededState& state = seeded_sets_[dimension];
+    if (state.stamp != pixel_stamp_ || state.coordinates < coordinates) {
+      state.words.resize(generator.state_words());
+      generator.seed(hash64(pixel_key_, dimension), coordinates, state.words.data());
+      state.stamp = pixel_stamp_, state.coordinates = coordinates;
+    }
+    std::array<double, 2> point{0.0, 0.0};
+    generator.point(state.words.data(), sequence_index_, coordinates, point.data());
+    return point;
+  }
   if (set_binder_) {
     const PointGenerator& generator = generator_for(dimension_++);
     return {generator.sample(sequence_index_, 0), coordinates > 1 ? generator.sample(sequence_index_, 1) : 0.0};
@@ -277,8 +299,17 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
           return get_2d_array_slow(seed, dimension, n, start, out);
         }
       }
-      cached.generator = continued_binder_->bind(seed, 0);
+      if (const auto& seeded = continued_binder_->seeded()) {
+        cached.seeded.words.resize(seeded->state_words());
+        seeded->seed(seed, 2, cached.seeded.words.data());
+      } else {
+        cached.generator = continued_binder_->bind(seed, 0);
+      }
       cached.stamp = pixel_stamp_, cached.n = n;
+    }
+    if (const auto& seeded = continued_binder_->seeded()) {
+      for (std::uint32_t i = 0; i < n; ++i) seeded->point(cached.seeded.words.data(), start + i, 2, out[i].data());
+      return;
     }
     const PointGenerator& generator = cached.generator;
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
@@ -287,8 +318,20 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
   if (set_binder_) {
     if (!array_binder_ || array_binder_->count() != n)
       array_binder_.emplace(settings_.sampler, set_request(seed, n, start));
+    if (const auto& seeded = array_binder_->seeded()) {  // a set per sample, seeded in place
+      seeded_scratch_.resize(seeded->state_words());
+      seeded->seed(seed, 2, seeded_scratch_.data());
+      for (std::uint32_t i = 0; i < n; ++i) seeded->point(seeded_scratch_.data(), start + i, 2, out[i].data());
+      return;
+    }
     const PointGenerator generator = array_binder_->bind(seed, start);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
+    return;
+  }
+  if (start == 0 && !keyed_ && !tables_) {  // a pattern's set per sample
+    if (!array_maker_ || array_maker_->count() != n) array_maker_.emplace(settings_.sampler, set_request(seed, n, 0));
+    const PointSet set = array_maker_->generate(seed);
+    for (std::uint32_t i = 0; i < n; ++i) out[i] = {set(i, 0), set(i, 1)};
     return;
   }
   const PointSet set = draw(settings_.sampler, n, 2, seed, start);  // points start … start + n − 1

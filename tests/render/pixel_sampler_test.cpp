@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stratum/randomizers/digit_permutation.hpp"
@@ -371,6 +372,49 @@ TEST(PixelSampler, ContinuedArraysUnderALowMemoryLimitBindPerSample) {
   }
   ASSERT_EQ(limited.size(), 48u);
   EXPECT_EQ(limited, unlimited);
+}
+
+TEST(PixelSampler, SeededSetsAndArraysEqualTheRegistrys) {
+  // faure and halton under owen draw through the registry's SeededGenerator
+  // (a seed's keys written in place per pixel and dimension, no generator
+  // bound per set): the film set (dimension 0; get_1d seeds its first
+  // coordinate only, a later get_2d of the same pixel both) and the
+  // continued shadow-ray arrays (dimension 1) equal the registry's sets, in
+  // frame 0 and in a later frame, also when a pixel is visited again.
+  for (const auto& [name, randomize] : {std::pair{"faure", ""}, std::pair{"halton", "owen"}})
+    for (const std::uint32_t frame : {0u, 3u}) {
+      PixelSamplerSettings s = settings(name, 16);
+      s.randomize = randomize, s.frame = frame;
+      PixelSampler sampler(s);
+      const std::uint64_t offset = std::uint64_t{frame} * 16;
+      for (const auto& [x, y] : {std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{3u, 2u}}) {
+        SamplerRequest film;
+        film.n = 16, film.d = 2, film.start = offset, film.randomize = randomize;
+        film.seed = PixelSampler::set_seed_for_test(7, x, y, 0);
+        const PointSet film_set = generate_points(name, film);
+        SamplerRequest arrays;
+        arrays.n = 4 * (offset + 16), arrays.d = 2, arrays.randomize = randomize;
+        arrays.seed = PixelSampler::array_seed_for_test(7, x, y, 1, PixelSampler::tag_continued);
+        const PointSet array_set = generate_points(name, arrays);
+        for (std::uint32_t index = 0; index < 16; ++index) {
+          sampler.start_pixel_sample(x, y, index);
+          if (index % 3 == 0) {
+            EXPECT_EQ(sampler.get_1d(), film_set(index, 0)) << name << " " << index;
+          } else {
+            const auto p = sampler.get_2d();
+            EXPECT_EQ(p[0], film_set(index, 0)) << name << " " << index;
+            EXPECT_EQ(p[1], film_set(index, 1)) << name << " " << index;
+          }
+          std::array<double, 2> array[4];
+          sampler.get_2d_array(4, array);
+          for (std::uint32_t i = 0; i < 4; ++i) {
+            const std::uint64_t row = 4 * (offset + index) + i;
+            EXPECT_EQ(array[i][0], array_set(row, 0)) << name << " " << index << " " << i;
+            EXPECT_EQ(array[i][1], array_set(row, 1)) << name << " " << index << " " << i;
+          }
+        }
+      }
+    }
 }
 
 }  // namespace

@@ -60,7 +60,6 @@ class BaseBOwenScrambler {
  public:
   BaseBOwenScrambler(std::uint64_t seed, const std::vector<std::uint32_t>& bases) {
     digits_detail::require_digit_bases(bases);
-    const std::uint64_t key = hash64(seed, 0x6f77656e62ULL /* "owenb" */);
     dims_.reserve(bases.size());
     std::size_t key_count = 0;
     for (const std::uint32_t base : bases) {
@@ -71,14 +70,24 @@ class BaseBOwenScrambler {
       key_count += 1 + (positions + per_word - 1) / per_word;
     }
     keys_.resize(key_count);
-    for (unsigned dim = 0; dim < bases.size(); ++dim) {
+    keys_for(seed, keys_.data());
+  }
+
+  /// The keys of `seed` (key_count() words) into `keys`, as the constructor
+  /// computes its own, for dimensions 0 … count − 1 (the others' keys are
+  /// left as they are): with view(keys), the scrambler of that seed without
+  /// constructing one (a renderer rekeys per pixel and dimension).
+  void keys_for(std::uint64_t seed, std::uint64_t* keys, unsigned count = ~0u) const noexcept {
+    const std::uint64_t key = hash64(seed, 0x6f77656e62ULL /* "owenb" */);
+    for (unsigned dim = 0; dim < dims_.size() && dim < count; ++dim) {
       // τ's key, then one key per prefix word: hash64(key, dim, k).
       const std::uint64_t dimension_key = hash64(key, dim);
       const std::size_t first = dims_[dim].first_key;
       const std::size_t end = dim + 1 < dims_.size() ? dims_[dim + 1].first_key : keys_.size();
-      for (std::size_t k = first; k < end; ++k) keys_[k] = hash64_extend(dimension_key, k - first);
+      for (std::size_t k = first; k < end; ++k) keys[k] = hash64_extend(dimension_key, k - first);
     }
   }
+  std::size_t key_count() const noexcept { return keys_.size(); }
 
   unsigned dimensions() const noexcept { return static_cast<unsigned>(dims_.size()); }
   std::uint32_t base(unsigned dim) const noexcept { return dims_[dim].base; }
@@ -197,6 +206,8 @@ class BaseBOwenScrambler {
 
   /// The per-sample path reading this object's arrays.
   View view() const noexcept { return View(dims_.data(), keys_.data()); }
+  /// The per-sample path with the keys of another seed (keys_for).
+  View view(const std::uint64_t* keys) const noexcept { return View(dims_.data(), keys); }
   /// The per-sample path reading copies: copy(data, count) copies `count`
   /// elements (trivially copyable) and returns the copy's address. The
   /// weights are copied once for all dimensions, and the copied dimensions

@@ -139,6 +139,24 @@ class PointGenerator {
   Sample sample_;
 };
 
+/// A request's generator for many seeds, where binding one per seed would
+/// cost more than its few points (a renderer's set per pixel and
+/// dimension): what does not depend on the seed is built once, a seed's
+/// state is `state_words()` 64-bit words that `seed` writes into the
+/// caller's storage (no allocation), and `point` reads a point from it. Its
+/// points equal those of the request's PointGenerator bound to that seed
+/// (tested), which remains the general path.
+class SeededGenerator {
+ public:
+  virtual ~SeededGenerator() = default;
+  virtual std::size_t state_words() const noexcept = 0;
+  /// The state of `seed` for coordinates 0 … coordinates − 1 (the others' words are left as they are).
+  virtual void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept = 0;
+  /// out[j] = coordinate j of point `index`, for j < coordinates, from a state `seed` wrote for them.
+  virtual void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+                     double* out) const noexcept = 0;
+};
+
 /// The words SamplerInfo::properties uses for SamplerFlags, in listings.
 inline constexpr const char* frames_continue_property = "start continues the pixel's sequence (frames)";
 
@@ -166,6 +184,10 @@ struct SamplerInfo {
   /// patterns whose points are computed alone once the set is built):
   /// without `generate`, the registry fills sets from it.
   std::function<PointGenerator(const SamplerRequest&)> bind{};
+  /// The request's generator as a SeededGenerator, where the sampler has
+  /// one under the request's randomizer (else nullptr): GeneratorBinder
+  /// builds it once, and the renderer draws its sets through it.
+  std::function<std::shared_ptr<const SeededGenerator>(const SamplerRequest&)> seeded{};
   /// Its 2D sets under a randomizer as keyed pairs (patterns/keyed_pairs.hpp:
   /// points from a key of the seed, no setup per set), where it has them,
   /// else nullopt: how the renderer draws a set per pixel and dimension.

@@ -53,9 +53,13 @@
 /// pixel sampler builds per pixel and dimension, and per shadow-ray array,
 /// only the digit permutations its points use, without allocation
 /// (bit-identical to RandomDigitPermutations; spp and array
-/// counts ≤ 2187, above which it builds RandomDigitPermutations). Other
-/// samplers draw each set through the registry once per pixel and dimension
-/// and cache it.
+/// counts ≤ 2187, above which it builds RandomDigitPermutations). Where the
+/// registry gives a SeededGenerator (SamplerInfo::seeded: faure and halton
+/// under owen), a set's seed is a few keys written in place per pixel and
+/// dimension and its points are read from them; other samplers with a
+/// generator bind one per pixel and dimension, and those made as a whole
+/// set generate each set once per pixel and dimension through a SetBinder
+/// (the request validated once) and cache it.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -170,6 +174,18 @@ class PixelSampler {
   /// (the same points: the registry fills its sets from the generator or is tested equal to it).
   std::vector<PointGenerator> generators_;  ///< this pixel's, by dimension (empty: not bound yet)
   const PointGenerator& generator_for(std::uint32_t dimension);
+  /// Where the binder's sampler has a SeededGenerator (SamplerInfo::seeded:
+  /// base-b owen), no generator is bound: per dimension (and per continued
+  /// array dimension) the state of the set's seed, written in place when the
+  /// pixel changes (a few hashes, no allocation) and read per point.
+  struct SeededState {
+    std::vector<std::uint64_t> words;
+    std::uint64_t stamp = 0;   ///< the pixel it was seeded for (pixel_stamp_)
+    unsigned coordinates = 0;  ///< the coordinates seeded
+    std::uint32_t n = 0;       ///< a continued array's points per array
+  };
+  std::vector<SeededState> seeded_sets_;
+  std::vector<std::uint64_t> seeded_scratch_;  ///< a per-sample array's state
   /// The request for `n` points from `start` of the pixel sampler's set with
   /// `seed` (its randomizer, its dimensions).
   SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
@@ -177,6 +193,10 @@ class PixelSampler {
   /// set where the sampler draws through its generator), and the shadow-ray
   /// arrays' for the last array count.
   std::optional<GeneratorBinder> set_binder_, array_binder_;
+  /// Samplers without a generator (or a direct path) make each set whole:
+  /// their requests validated once (SetBinder), the pixel sets' and the
+  /// per-sample arrays' (for the last array count), then generated per seed.
+  std::optional<SetBinder> set_maker_, array_maker_;
   /// A progressive sampler's shadow-ray arrays through its generator: one
   /// seed per pixel and array dimension (tag_continued) for all its samples,
   /// so the generator is bound once per pixel and dimension, not per sample,
@@ -185,6 +205,7 @@ class PixelSampler {
   /// binding per sample as for a pattern). Never allocates those points.
   struct ContinuedArray {
     PointGenerator generator;
+    SeededState seeded;       ///< instead of the generator, where the binder has a SeededGenerator
     std::uint64_t stamp = 0;  ///< the pixel it was bound for (pixel_stamp_)
     std::uint32_t n = 0;      ///< points per array
   };
