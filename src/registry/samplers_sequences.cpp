@@ -113,6 +113,12 @@ class OwenSeeded final : public SeededGenerator {
     const BaseBOwenScrambler::View view = scrambler_.view(state);
     for (unsigned j = 0; j < coordinates; ++j) out[j] = view.sample(digits_(index, j), j);
   }
+  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+              double* out) const noexcept override {
+    const BaseBOwenScrambler::View view = scrambler_.view(state);
+    for (std::uint64_t k = 0; k < count; ++k, out += coordinates)
+      for (unsigned j = 0; j < coordinates; ++j) out[j] = view.sample(digits_(first + k, j), j);
+  }
 
  private:
   BaseBOwenScrambler scrambler_;

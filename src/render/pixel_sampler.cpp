@@ -308,7 +308,9 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
       cached.stamp = pixel_stamp_, cached.n = n;
     }
     if (const auto& seeded = continued_binder_->seeded()) {
-      for (std::uint32_t i = 0; i < n; ++i) seeded->point(cached.seeded.words.data(), start + i, 2, out[i].data());
+      seeded_points_.resize(2 * std::size_t{n});
+      seeded->points(cached.seeded.words.data(), start, n, 2, seeded_points_.data());
+      for (std::uint32_t i = 0; i < n; ++i) out[i] = {seeded_points_[2 * i], seeded_points_[2 * i + 1]};
       return;
     }
     const PointGenerator& generator = cached.generator;
@@ -321,7 +323,9 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     if (const auto& seeded = array_binder_->seeded()) {  // a set per sample, seeded in place
       seeded_scratch_.resize(seeded->state_words());
       seeded->seed(seed, 2, seeded_scratch_.data());
-      for (std::uint32_t i = 0; i < n; ++i) seeded->point(seeded_scratch_.data(), start + i, 2, out[i].data());
+      seeded_points_.resize(2 * std::size_t{n});
+      seeded->points(seeded_scratch_.data(), start, n, 2, seeded_points_.data());
+      for (std::uint32_t i = 0; i < n; ++i) out[i] = {seeded_points_[2 * i], seeded_points_[2 * i + 1]};
       return;
     }
     const PointGenerator generator = array_binder_->bind(seed, start);

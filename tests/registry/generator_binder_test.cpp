@@ -89,11 +89,15 @@ TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
           SamplerRequest fresh = request;
           fresh.seed = seed;
           const PointGenerator expected = bind_generator(info.name, fresh);
+          std::vector<double> block(12 * coordinates);  // points 4 … 15 in one call
+          generator.points(state.data(), 4, 12, coordinates, block.data());
           for (std::uint64_t i = 0; i < 16; ++i) {
             std::vector<double> point(coordinates);
             generator.point(state.data(), i, coordinates, point.data());
-            for (unsigned j = 0; j < coordinates; ++j)
+            for (unsigned j = 0; j < coordinates; ++j) {
               ASSERT_EQ(point[j], expected.sample(i, j)) << info.name << ":" << randomize << " " << seed << " " << i;
+              if (i >= 4) ASSERT_EQ(block[(i - 4) * coordinates + j], point[j]) << info.name << " " << i;
+            }
           }
         }
     }

@@ -64,10 +64,11 @@ class BaseBOwenScrambler {
     std::size_t key_count = 0;
     for (const std::uint32_t base : bases) {
       const unsigned positions = digits_detail::digit_count(base), per_word = word_digits(base);
-      dims_.push_back({base, positions, per_word, key_count, digits_detail::FastDivider(base), is_prime(base),
+      const unsigned words = (positions + per_word - 1) / per_word;
+      dims_.push_back({base, positions, per_word, words, key_count, digits_detail::FastDivider(base), is_prime(base),
                        base == 2 ? nullptr : digits_detail::shared_digit_weights(base),
                        base == 2 ? 0 : power_of(base, per_word)});
-      key_count += 1 + (positions + per_word - 1) / per_word;
+      key_count += 1 + words + 1;  // τ's key, the prefix words' keys, the word of prefix 0
     }
     keys_.resize(key_count);
     keys_for(seed, keys_.data());
@@ -80,11 +81,13 @@ class BaseBOwenScrambler {
   void keys_for(std::uint64_t seed, std::uint64_t* keys, unsigned count = ~0u) const noexcept {
     const std::uint64_t key = hash64(seed, 0x6f77656e62ULL /* "owenb" */);
     for (unsigned dim = 0; dim < dims_.size() && dim < count; ++dim) {
-      // τ's key, then one key per prefix word: hash64(key, dim, k).
+      // τ's key (base 2 has no τ), then one key per prefix word: hash64(key, dim, k); then the first word of
+      // prefix 0, which every point reads first (its digit 0's node), hashed once here instead of per point.
+      const Dimension& d = dims_[dim];
       const std::uint64_t dimension_key = hash64(key, dim);
-      const std::size_t first = dims_[dim].first_key;
-      const std::size_t end = dim + 1 < dims_.size() ? dims_[dim + 1].first_key : keys_.size();
-      for (std::size_t k = first; k < end; ++k) keys[k] = hash64_extend(dimension_key, k - first);
+      std::uint64_t* own = keys + d.first_key;
+      for (unsigned k = d.base == 2 ? 1 : 0; k <= d.prefix_words; ++k) own[k] = hash64_extend(dimension_key, k);
+      own[1 + d.prefix_words] = node_word(own[1], 0);
     }
   }
   std::size_t key_count() const noexcept { return keys_.size(); }
@@ -120,8 +123,9 @@ class BaseBOwenScrambler {
 
   struct Dimension {
     std::uint32_t base;
-    unsigned positions;    // K(b)
-    unsigned word_digits;  // D(b): shifts read from one prefix word
+    unsigned positions;     // K(b)
+    unsigned word_digits;   // D(b): shifts read from one prefix word
+    unsigned prefix_words;  // ⌈K(b) / D(b)⌉: words of one prefix
     std::size_t first_key;
     digits_detail::FastDivider divider;
     bool prime;
@@ -139,17 +143,17 @@ class BaseBOwenScrambler {
     STRATUM_HOST_DEVICE std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
       const Dimension& d = dims_[dim];
       const std::uint64_t* keys = keys_ + d.first_key;
-      if (d.base == 2) return fraction2(index, keys[1]);
+      if (d.base == 2) return fraction2(index, keys[1], keys[2]);
       const digits_detail::u128* weights = d.weights;
       const std::uint32_t b = d.base;
       digits_detail::u128 sum = 0;
       std::uint64_t prefix = 0, rest = index;
-      std::uint64_t power = 1;                   // b^j modulo 2^64: only multiplies digits 0 once it wraps
-      unsigned j = 0, t = 0;                     // position, and its digit in its prefix word
-      std::uint64_t word_power = 1;              // b^t
-      const std::uint64_t* word_key = keys + 1;  // of word ⌊j / D⌋
-      std::uint64_t word = 0;
-      bool fresh = false;  // `word` is word ⌊j / D⌋ of `prefix`
+      std::uint64_t power = 1;                        // b^j modulo 2^64: only multiplies digits 0 once it wraps
+      unsigned j = 0, t = 0;                          // position, and its digit in its prefix word
+      std::uint64_t word_power = 1;                   // b^t
+      const std::uint64_t* word_key = keys + 1;       // of word ⌊j / D⌋
+      std::uint64_t word = keys[1 + d.prefix_words];  // word 0 of prefix 0
+      bool fresh = true;                              // `word` is word ⌊j / D⌋ of `prefix`
       // The index's digits, up to its last nonzero one, one at a time.
       for (; rest != 0; ++j, ++t, power *= b, word_power *= b) {
         if (t == d.word_digits) t = 0, word_power = 1, ++word_key, fresh = false;
@@ -166,10 +170,11 @@ class BaseBOwenScrambler {
       // the shifts, the rest of each word's digits as one integer,
       // ⌊frac(w·b^t / 2^64)·b^(c−t)⌋ for digits t..c−1 (their weights sum
       // to that integer times the weight of digit c−1, up to the floors).
-      if (t == d.word_digits) t = 0, word_power = 1, ++word_key;
+      if (t == d.word_digits) t = 0, word_power = 1, ++word_key, fresh = false;
       for (unsigned first = j - t; first < d.positions; first += d.word_digits, t = 0, word_power = 1, ++word_key) {
         const unsigned count = d.positions - first < d.word_digits ? d.positions - first : d.word_digits;
-        const std::uint64_t w = node_word(*word_key, prefix);
+        const std::uint64_t w = fresh ? word : node_word(*word_key, prefix);  // fresh: index 0's first word
+        fresh = false;
         const auto below = static_cast<std::uint64_t>(static_cast<digits_detail::u128>(w) * word_power);
         const std::uint64_t span = count == d.word_digits && t == 0 ? d.word_power : power_of(b, count - t);
         const auto digits = static_cast<std::uint64_t>((static_cast<digits_detail::u128>(below) * span) >> 64);
@@ -186,12 +191,15 @@ class BaseBOwenScrambler {
     // Base 2: π(a) = a ⊕ s, so the fraction is the reversed index ⊕ the
     // shifts; the positions lo..hi that share a prefix take bits 63−hi..63−lo
     // of its word (position j is bit 63 − j, the fraction's order).
-    STRATUM_HOST_DEVICE static std::uint64_t fraction2(std::uint64_t index, std::uint64_t word_key) noexcept {
+    // zero_word is the word of prefix 0, the first segment's.
+    STRATUM_HOST_DEVICE static std::uint64_t fraction2(std::uint64_t index, std::uint64_t word_key,
+                                                       std::uint64_t zero_word) noexcept {
       std::uint64_t flips = 0, prefix = 0, rest = index;
       unsigned lo = 0;
       for (;;) {
         const unsigned hi = rest == 0 ? 63u : static_cast<unsigned>(countr_zero64(rest));
-        flips |= node_word(word_key, prefix) & ((~std::uint64_t{0} >> lo) & (~std::uint64_t{0} << (63 - hi)));
+        const std::uint64_t word = prefix == 0 ? zero_word : node_word(word_key, prefix);
+        flips |= word & ((~std::uint64_t{0} >> lo) & (~std::uint64_t{0} << (63 - hi)));
         if (rest == 0 || hi == 63) break;
         prefix |= std::uint64_t{1} << hi;
         rest &= rest - 1;

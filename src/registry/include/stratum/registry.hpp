@@ -155,6 +155,11 @@ class SeededGenerator {
   /// out[j] = coordinate j of point `index`, for j < coordinates, from a state `seed` wrote for them.
   virtual void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
                      double* out) const noexcept = 0;
+  /// Points first … first + count − 1 (point k's coordinates at out + k·coordinates): one call for an array.
+  virtual void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+                      double* out) const noexcept {
+    for (std::uint64_t k = 0; k < count; ++k) point(state, first + k, coordinates, out + k * coordinates);
+  }
 };
 
 /// The words SamplerInfo::properties uses for SamplerFlags, in listings.

@@ -186,6 +186,7 @@ class PixelSampler {
   };
   std::vector<SeededState> seeded_sets_;
   std::vector<std::uint64_t> seeded_scratch_;  ///< a per-sample array's state
+  std::vector<double> seeded_points_;          ///< an array's points as SeededGenerator::points writes them
   /// The request for `n` points from `start` of the pixel sampler's set with
   /// `seed` (its randomizer, its dimensions).
   SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
