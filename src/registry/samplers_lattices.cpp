@@ -214,6 +214,7 @@ std::vector<SamplerInfo> lattices() {
       .count = requested_count,
       .generate = generate_rotated(kronecker_from),
       .bind = bind_rotated(kronecker_from),
+      .seeded = seeded_rotated(kronecker_from),
   });
 
   list.push_back({
@@ -235,6 +236,7 @@ std::vector<SamplerInfo> lattices() {
       .count = requested_count,
       .generate = generate_rotated(lattice_sequence_from),
       .bind = bind_rotated(lattice_sequence_from),
+      .seeded = seeded_rotated(lattice_sequence_from),
   });
 
   return list;

@@ -197,6 +197,7 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(grid_pattern),
       .bind = bind_rotated(grid_pattern),
+      .seeded = seeded_rotated(grid_pattern),
   });
 
   list.push_back({
@@ -352,6 +353,7 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(zaremba_pattern),
       .bind = bind_rotated(zaremba_pattern),
+      .seeded = seeded_rotated(zaremba_pattern),
   });
 
   return list;

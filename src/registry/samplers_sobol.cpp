@@ -552,6 +552,7 @@ std::vector<SamplerInfo> sobol() {
       .count = requested_count,
       .generate = generate_sobol,  // the block walk (bulk); bind draws one point at a time
       .bind = bind_sobol,
+      .keyed_pairs = keyed_under<SobolOwenHashPairs>(Randomizer::owen_hash),  // Sobol's dimensions 0 and 1
   });
 
   return list;

@@ -1,6 +1,7 @@
 #pragma once
 /// Helpers shared by the registry's sampler families: parameter parsing,
 /// point buffers and deterministic parallel filling.
+#include <bit>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -96,6 +97,44 @@ auto generate_rotated(Make make) {
 template <class Make>
 auto bind_rotated(Make make) {
   return [make](const SamplerRequest& request) { return rotated_generator(request, make(request)); };
+}
+
+/// A construction that does not depend on the seed (grid, zaremba, kronecker,
+/// lattice-sequence) as a SeededGenerator: built once per request; a seed's
+/// state is its Cranley–Patterson shifts (cp; none: no state). The points of
+/// rotated_generator.
+template <class Construction>
+class RotatedSeeded final : public SeededGenerator {
+ public:
+  RotatedSeeded(Construction construction, unsigned dimensions, bool rotate)
+      : construction_(std::move(construction)), dimensions_(dimensions), rotate_(rotate) {}
+  std::size_t state_words() const noexcept override { return rotate_ ? dimensions_ : 0; }
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
+    if (!rotate_) return;
+    const CranleyPattersonRotation rotation(seed);
+    for (unsigned j = 0; j < coordinates; ++j) state[j] = std::bit_cast<std::uint64_t>(rotation.shift(j));
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    for (unsigned j = 0; j < coordinates; ++j) {
+      const double value = construction_.sample(index, j);
+      out[j] = rotate_ ? CranleyPattersonRotation::rotate(value, std::bit_cast<double>(state[j])) : value;
+    }
+  }
+
+ private:
+  Construction construction_;
+  unsigned dimensions_;
+  bool rotate_;
+};
+/// SamplerInfo::seeded of such a construction (make(request) must not read the seed).
+template <class Make>
+auto seeded_rotated(Make make) {
+  return [make](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
+    using Construction = std::decay_t<decltype(make(request))>;
+    return std::make_shared<const RotatedSeeded<Construction>>(make(request), request.d,
+                                                               request.randomizer == Randomizer::cp);
+  };
 }
 
 /// SamplerInfo::keyed_pairs of a sampler whose 2D sets are `Pairs`

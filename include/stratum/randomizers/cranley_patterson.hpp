@@ -25,7 +25,13 @@ class CranleyPattersonRotation {
   /// (value + shift(dim)) mod 1, kept inside [0, 1).
   template <class Real = double>
   STRATUM_HOST_DEVICE constexpr Real operator()(double value, unsigned dim) const noexcept {
-    double rotated = value + shift(dim);
+    return rotate<Real>(value, shift(dim));
+  }
+
+  /// (value + shift) mod 1, kept inside [0, 1): operator() with the shift computed once by the caller.
+  template <class Real = double>
+  STRATUM_HOST_DEVICE static constexpr Real rotate(double value, double shift) noexcept {
+    double rotated = value + shift;
     if (rotated >= 1.0) rotated -= 1.0;
     return to_unit<Real>(rotated < one_minus_epsilon_double ? rotated : one_minus_epsilon_double);
   }
