@@ -18,7 +18,9 @@
 // table-free path (the permutations a set needs, built per pixel and
 // dimension and per shadow-ray array; the same points as the registry);
 // faure and halton:owen (exact base-b Owen scrambling) draw through their
-// registry generators, bound per pixel and dimension and per array.
+// registry's SeededGenerator (a seed's keys written in place per pixel and
+// dimension and per array). BM_PixelSamplerDraws times the draws alone for
+// every sampler the renderer takes.
 //
 // Part of stratum_bench only when the renderer is built (bench/CMakeLists.txt
 // leaves it out otherwise, since it needs stratum_render and Embree).
@@ -33,15 +35,18 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <string>
 #include <limits>
+#include <string>
+#include <utility>
 #include <optional>
 #include <vector>
 
 #include "stratum/render/bsdf.hpp"
 #include "stratum/render/camera_model.hpp"
 #include "stratum/render/lights.hpp"
+#include "stratum/render/pixel_sampler.hpp"
 #include "stratum/render/render.hpp"
+#include "stratum/registry.hpp"
 
 namespace {
 using namespace stratum::render;
@@ -370,6 +375,55 @@ void BM_RenderSetup(benchmark::State& state) {
   settings.sampler.spp = 1;
   for (auto _ : state) benchmark::DoNotOptimize(render(scene, settings).rgb.data());
 }
+
+/// The draws of a direct-lighting sample alone (film position, time, lens,
+/// the M = 4 shadow-ray array and the light offset), for every pixel of the
+/// 64×64 image at 4 spp, one thread: what BM_DirectVsBareEmbree's ladder
+/// calls "draws", for every sampler the renderer takes (its default
+/// randomizer; halton also under owen). ns_per_sample; sobol's row is the peer.
+void BM_PixelSamplerDraws(benchmark::State& state, const std::string& sampler, const std::string& randomize) {
+  PixelSamplerSettings settings;
+  settings.sampler = sampler;
+  settings.randomize = randomize;
+  settings.spp = kSpp;
+  settings.seed = 1;
+  settings.resolution = kSize;
+  const PixelSampler prototype(settings);
+  double sink = 0;
+  for (auto _ : state) {
+    PixelSampler draws(prototype);  // render() copies one per tile: its caches start empty
+    for (std::uint32_t y = 0; y < kSize; ++y)
+      for (std::uint32_t x = 0; x < kSize; ++x)
+        for (std::uint32_t index = 0; index < kSpp; ++index) {
+          draws.start_pixel_sample(x, y, index);
+          const auto film = draws.get_pixel_2d();
+          const double time = draws.get_time();
+          const auto lens = draws.get_2d();
+          std::array<double, 2> shadow[kShadow];
+          draws.get_2d_array(kShadow, shadow);
+          sink += film[0] + time + lens[1] + shadow[kShadow - 1][0] + draws.get_1d();
+        }
+  }
+  benchmark::DoNotOptimize(sink);
+  state.counters["ns_per_sample"] =  // seconds a sample, printed with its SI prefix (n)
+      benchmark::Counter(double(kSize * kSize * kSpp),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+int register_pixel_sampler_draws() {
+  std::vector<std::pair<std::string, std::string>> runs;
+  for (const stratum::SamplerInfo& info : stratum::samplers())
+    if (!info.flags.space_time) runs.emplace_back(info.name, "");
+  runs.emplace_back("halton", "owen");
+  for (const auto& [sampler, randomize] : runs)
+    benchmark::RegisterBenchmark(
+        ("BM_PixelSamplerDraws/" + sampler + (randomize.empty() ? "" : ":" + randomize)).c_str(), BM_PixelSamplerDraws,
+        sampler, randomize)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  return 0;
+}
+const int pixel_sampler_draws_registered = register_pixel_sampler_draws();
 
 }  // namespace
 

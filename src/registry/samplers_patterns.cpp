@@ -274,6 +274,11 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(cmj_pattern),
       .bind = bind_rotated(cmj_pattern),
+      .seeded = seeded_by_value([](const SamplerRequest& request) {
+        return [n = *request.n, aspect = aspect_of(request)](std::uint64_t seed) {
+          return CorrelatedMultiJittered(n, seed, aspect);
+        };
+      }),
   });
 
   list.push_back({
