@@ -156,7 +156,7 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   if (sets_.size() <= dimension) sets_.resize(dimension + 1);
   PointSet& set = sets_[dimension];
   if (set.n != 0) return set;
-  const std::uint64_t seed = hash64(pixel_key_, dimension);
+  const std::uint64_t seed = hash64_extend(pixel_mix_, dimension);
   if (keyed_ || tables_) {
     set = draw(settings_.sampler, settings_.spp, 2, seed, offset_);
   } else {
@@ -179,7 +179,7 @@ SamplerRequest PixelSampler::set_request(std::uint64_t seed, std::uint64_t n, st
 const PointGenerator& PixelSampler::generator_for(std::uint32_t dimension) {
   if (generators_.size() <= dimension) generators_.resize(dimension + 1);
   PointGenerator& generator = generators_[dimension];
-  if (!generator) generator = set_binder_->bind(hash64(pixel_key_, dimension), offset_);
+  if (!generator) generator = set_binder_->bind(hash64_extend(pixel_mix_, dimension), offset_);
   return generator;
 }
 
@@ -227,7 +227,7 @@ const RankedBlueNoise::PixelPair& PixelSampler::ranked_bn_pair_miss(std::uint32_
 std::array<double, 2> PixelSampler::table_point_miss(std::uint32_t dimension, unsigned coordinates) {
   if (table_sets_.size() <= dimension) table_sets_.resize(dimension + 1);
   HaltonPairTables::Set& set = table_sets_[dimension];
-  tables_->build(hash64(pixel_key_, dimension), offset_ + settings_.spp, set, coordinates);
+  tables_->build(hash64_extend(pixel_mix_, dimension), offset_ + settings_.spp, set, coordinates);
   return HaltonPairTables::point(set, sequence_index_);
 }
 
@@ -239,7 +239,7 @@ std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
     SeededState& state = seeded_sets_[dimension];
     if (state.stamp != pixel_stamp_ || state.coordinates < coordinates) {
       state.words.resize(generator.state_words());
-      generator.seed(hash64(pixel_key_, dimension), coordinates, state.words.data());
+      generator.seed(hash64_extend(pixel_mix_, dimension), coordinates, state.words.data());  // hash64(key, dim)
       state.stamp = pixel_stamp_, state.coordinates = coordinates;
     }
     std::array<double, 2> point{0.0, 0.0};

@@ -79,12 +79,13 @@ class BaseBOwenScrambler {
   /// left as they are): with view(keys), the scrambler of that seed without
   /// constructing one (a renderer rekeys per pixel and dimension).
   void keys_for(std::uint64_t seed, std::uint64_t* keys, unsigned count = ~0u) const noexcept {
-    const std::uint64_t key = hash64(seed, 0x6f77656e62ULL /* "owenb" */);
+    // hash64(key, dim) = hash64_extend(hash64(key), dim): the first mix shared by the dimensions.
+    const std::uint64_t key_mix = hash64(hash64(seed, 0x6f77656e62ULL /* "owenb" */));
     for (unsigned dim = 0; dim < dims_.size() && dim < count; ++dim) {
       // τ's key (base 2 has no τ), then one key per prefix word: hash64(key, dim, k); then the first word of
       // prefix 0, which every point reads first (its digit 0's node), hashed once here instead of per point.
       const Dimension& d = dims_[dim];
-      const std::uint64_t dimension_key = hash64(key, dim);
+      const std::uint64_t dimension_key = hash64_extend(key_mix, dim);
       std::uint64_t* own = keys + d.first_key;
       for (unsigned k = d.base == 2 ? 1 : 0; k <= d.prefix_words; ++k) own[k] = hash64_extend(dimension_key, k);
       own[1 + d.prefix_words] = node_word(own[1], 0);
