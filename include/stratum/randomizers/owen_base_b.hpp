@@ -144,7 +144,17 @@ class BaseBOwenScrambler {
     STRATUM_HOST_DEVICE std::uint64_t fraction(std::uint64_t index, unsigned dim) const noexcept {
       const Dimension& d = dims_[dim];
       const std::uint64_t* keys = keys_ + d.first_key;
-      if (d.base == 2) return fraction2(index, keys[1], keys[2]);
+      if (d.base == 2) return fraction2(index, keys[1], keys[2]);  // small: inlined where fraction is
+      return fraction_b(d, keys, index);
+    }
+    template <class Real = double>
+    STRATUM_HOST_DEVICE Real sample(std::uint64_t index, unsigned dim) const noexcept {
+      return to_unit<Real>(digits_detail::fraction_to_double(fraction(index, dim)));
+    }
+
+   private:
+    STRATUM_HOST_DEVICE static std::uint64_t fraction_b(const Dimension& d, const std::uint64_t* keys,
+                                                        std::uint64_t index) noexcept {
       const digits_detail::u128* weights = d.weights;
       const std::uint32_t b = d.base;
       digits_detail::u128 sum = 0;
@@ -183,12 +193,7 @@ class BaseBOwenScrambler {
       }
       return static_cast<std::uint64_t>(sum >> 64);
     }
-    template <class Real = double>
-    STRATUM_HOST_DEVICE Real sample(std::uint64_t index, unsigned dim) const noexcept {
-      return to_unit<Real>(digits_detail::fraction_to_double(fraction(index, dim)));
-    }
 
-   private:
     // Base 2: π(a) = a ⊕ s, so the fraction is the reversed index ⊕ the
     // shifts; the positions lo..hi that share a prefix take bits 63−hi..63−lo
     // of its word (position j is bit 63 − j, the fraction's order).

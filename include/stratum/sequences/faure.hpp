@@ -76,7 +76,8 @@ class Faure {
 
   /// Σ_r y_r b^r with y = C_dim · (digits of index) mod b, r < R(b).
   std::uint64_t digit_word(std::uint64_t index, unsigned dim) const noexcept {
-    if (base_ == 2) {  // y = C·a over GF(2): the columns of the index's 1 bits, xor-ed (as Sobol's)
+    if (base_ == 2) {              // y = C·a over GF(2): the columns of the index's 1 bits, xor-ed (as Sobol's)
+      if (dim == 0) return index;  // C_0 = I, all 64 digits kept
       const std::uint64_t* columns = columns2_.data() + std::size_t{dim} * 64;
       std::uint64_t word = 0;
       for (; index != 0; index &= index - 1) word ^= columns[countr_zero64(index)];
