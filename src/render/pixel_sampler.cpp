@@ -307,12 +307,8 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
       }
       cached.stamp = pixel_stamp_, cached.n = n;
     }
-    if (const auto& seeded = continued_binder_->seeded()) {
-      seeded_points_.resize(2 * std::size_t{n});
-      seeded->points(cached.seeded.words.data(), start, n, 2, seeded_points_.data());
-      for (std::uint32_t i = 0; i < n; ++i) out[i] = {seeded_points_[2 * i], seeded_points_[2 * i + 1]};
-      return;
-    }
+    if (const auto& seeded = continued_binder_->seeded())
+      return seeded_array(*seeded, cached.seeded.words.data(), start, n, out);
     const PointGenerator& generator = cached.generator;
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;
@@ -323,23 +319,25 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
     if (const auto& seeded = array_binder_->seeded()) {  // a set per sample, seeded in place
       seeded_scratch_.resize(seeded->state_words());
       seeded->seed(seed, 2, seeded_scratch_.data());
-      seeded_points_.resize(2 * std::size_t{n});
-      seeded->points(seeded_scratch_.data(), start, n, 2, seeded_points_.data());
-      for (std::uint32_t i = 0; i < n; ++i) out[i] = {seeded_points_[2 * i], seeded_points_[2 * i + 1]};
-      return;
+      return seeded_array(*seeded, seeded_scratch_.data(), start, n, out);
     }
     const PointGenerator generator = array_binder_->bind(seed, start);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;
   }
-  if (start == 0 && !keyed_ && !tables_) {  // a pattern's set per sample
-    if (!array_maker_ || array_maker_->count() != n) array_maker_.emplace(settings_.sampler, set_request(seed, n, 0));
-    const PointSet set = array_maker_->generate(seed);
-    for (std::uint32_t i = 0; i < n; ++i) out[i] = {set(i, 0), set(i, 1)};
-    return;
-  }
-  const PointSet set = draw(settings_.sampler, n, 2, seed, start);  // points start … start + n − 1
+  const bool made_whole = start == 0 && !keyed_ && !tables_;  // a pattern's set per sample, through its SetBinder
+  if (made_whole && (!array_maker_ || array_maker_->count() != n))
+    array_maker_.emplace(settings_.sampler, set_request(seed, n, 0));
+  const PointSet set =  // points start … start + n − 1
+      made_whole ? array_maker_->generate(seed) : draw(settings_.sampler, n, 2, seed, start);
   for (std::uint32_t i = 0; i < n; ++i) out[i] = {set(i, 0), set(i, 1)};
+}
+
+void PixelSampler::seeded_array(const SeededGenerator& generator, const std::uint64_t* state, std::uint64_t start,
+                                std::uint32_t n, std::array<double, 2>* out) {
+  seeded_points_.resize(2 * std::size_t{n});
+  generator.points(state, start, n, 2, seeded_points_.data());
+  for (std::uint32_t i = 0; i < n; ++i) out[i] = {seeded_points_[2 * i], seeded_points_[2 * i + 1]};
 }
 
 }  // namespace stratum::render

@@ -187,6 +187,9 @@ class PixelSampler {
   std::vector<SeededState> seeded_sets_;
   std::vector<std::uint64_t> seeded_scratch_;  ///< a per-sample array's state
   std::vector<double> seeded_points_;          ///< an array's points as SeededGenerator::points writes them
+  /// out[i] = point start + i of a seeded state (i < n).
+  void seeded_array(const SeededGenerator& generator, const std::uint64_t* state, std::uint64_t start, std::uint32_t n,
+                    std::array<double, 2>* out);
   /// The request for `n` points from `start` of the pixel sampler's set with
   /// `seed` (its randomizer, its dimensions).
   SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
