@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stratum/registry.hpp"
@@ -15,36 +16,51 @@
 
 using namespace stratum;
 
-TEST(GeneratorBinder, BindsWhatBindGeneratorBindsForEverySeedAndStart) {
-  int compared = 0;
+namespace {
+/// A 16-point request in the sampler's smallest dimension (at least 2) under
+/// each of its randomizers, for every sampler that binds a generator and
+/// takes 16 points (the others' own tests cover them).
+std::vector<std::pair<const SamplerInfo*, SamplerRequest>> bindable_requests() {
+  std::vector<std::pair<const SamplerInfo*, SamplerRequest>> requests;
   for (const SamplerInfo& info : samplers()) {
     if (!info.bind) continue;
-    const unsigned d = std::max(2u, info.min_dim);
     SamplerRequest request;
-    request.n = 16, request.d = d;
+    request.n = 16, request.d = std::max(2u, info.min_dim);
     try {
       validate_request(info, request);
     } catch (const invalid_argument&) {
-      continue;  // a sampler that takes no 16-point set (its own tests cover it)
+      continue;
     }
     for (const std::string& randomize : info.randomizers) {
       request.randomize = randomize;
-      GeneratorBinder binder(info.name, request);
-      EXPECT_EQ(binder.count(), 16u);
-      const bool continues = info.kind == "sequence" || info.flags.progressive;
-      for (const std::uint64_t seed : {0ull, 3ull, 0xfeedfacecafebeefull})
-        for (const std::uint64_t start : {0ull, 32ull}) {
-          if (start != 0 && !continues) continue;
-          SamplerRequest fresh = request;
-          fresh.seed = seed, fresh.start = start;
-          const PointGenerator expected = bind_generator(info.name, fresh);
-          const PointGenerator got = binder.bind(seed, start);
-          for (std::uint64_t i = start; i < start + 16; ++i)
-            for (unsigned j = 0; j < d; ++j)
-              ASSERT_EQ(got.sample(i, j), expected.sample(i, j)) << info.name << ":" << randomize << " " << seed;
-          ++compared;
-        }
+      requests.emplace_back(&info, request);
     }
+  }
+  return requests;
+}
+}  // namespace
+
+TEST(GeneratorBinder, BindsWhatBindGeneratorBindsForEverySeedAndStart) {
+  int compared = 0;
+  for (const auto& [sampler, request] : bindable_requests()) {
+    const SamplerInfo& info = *sampler;
+    const unsigned d = request.d;
+    const std::string& randomize = request.randomize;
+    GeneratorBinder binder(info.name, request);
+    EXPECT_EQ(binder.count(), 16u);
+    const bool continues = info.kind == "sequence" || info.flags.progressive;
+    for (const std::uint64_t seed : {0ull, 3ull, 0xfeedfacecafebeefull})
+      for (const std::uint64_t start : {0ull, 32ull}) {
+        if (start != 0 && !continues) continue;
+        SamplerRequest fresh = request;
+        fresh.seed = seed, fresh.start = start;
+        const PointGenerator expected = bind_generator(info.name, fresh);
+        const PointGenerator got = binder.bind(seed, start);
+        for (std::uint64_t i = start; i < start + 16; ++i)
+          for (unsigned j = 0; j < d; ++j)
+            ASSERT_EQ(got.sample(i, j), expected.sample(i, j)) << info.name << ":" << randomize << " " << seed;
+        ++compared;
+      }
   }
   EXPECT_GE(compared, 60);
 }
@@ -64,45 +80,36 @@ TEST(GeneratorBinder, ValidatesOnceAtConstructionWithTheRegistrysMessages) {
 TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
   // Where a sampler has a SeededGenerator (base-b owen; the constructions
   // that do not depend on the seed, under none and cp; cmj's, copied by
-  // value), a seed's state
-  // written in place gives bind's points, for the leading coordinates asked
-  // and for all of them; other randomizers have none (bind stays the path).
+  // value), a seed's state written in place gives bind's points, for the
+  // leading coordinates asked and for all of them; other randomizers have
+  // none (bind stays the path).
   std::set<std::string> seeded;
-  for (const SamplerInfo& info : samplers()) {
-    if (!info.bind) continue;
-    const unsigned d = std::max(2u, info.min_dim);
-    SamplerRequest request;
-    request.n = 16, request.d = d;
-    try {
-      validate_request(info, request);
-    } catch (const invalid_argument&) {
-      continue;
-    }
-    for (const std::string& randomize : info.randomizers) {
-      request.randomize = randomize;
-      const GeneratorBinder binder(info.name, request);
-      if (!binder.seeded()) continue;
-      seeded.insert(info.name + ":" + randomize);
-      const SeededGenerator& generator = *binder.seeded();
-      std::vector<std::uint64_t> state(generator.state_words());
-      for (const std::uint64_t seed : {0ull, 3ull, 0xfeedfacecafebeefull})
-        for (const unsigned coordinates : {1u, d}) {
-          generator.seed(seed, coordinates, state.data());
-          SamplerRequest fresh = request;
-          fresh.seed = seed;
-          const PointGenerator expected = bind_generator(info.name, fresh);
-          std::vector<double> block(12 * coordinates);  // points 4 … 15 in one call
-          generator.points(state.data(), 4, 12, coordinates, block.data());
-          for (std::uint64_t i = 0; i < 16; ++i) {
-            std::vector<double> point(coordinates);
-            generator.point(state.data(), i, coordinates, point.data());
-            for (unsigned j = 0; j < coordinates; ++j) {
-              ASSERT_EQ(point[j], expected.sample(i, j)) << info.name << ":" << randomize << " " << seed << " " << i;
-              if (i >= 4) ASSERT_EQ(block[(i - 4) * coordinates + j], point[j]) << info.name << " " << i;
-            }
+  for (const auto& [sampler, request] : bindable_requests()) {
+    const SamplerInfo& info = *sampler;
+    const unsigned d = request.d;
+    const std::string& randomize = request.randomize;
+    const GeneratorBinder binder(info.name, request);
+    if (!binder.seeded()) continue;
+    seeded.insert(info.name + ":" + randomize);
+    const SeededGenerator& generator = *binder.seeded();
+    std::vector<std::uint64_t> state(generator.state_words());
+    for (const std::uint64_t seed : {0ull, 3ull, 0xfeedfacecafebeefull})
+      for (const unsigned coordinates : {1u, d}) {
+        generator.seed(seed, coordinates, state.data());
+        SamplerRequest fresh = request;
+        fresh.seed = seed;
+        const PointGenerator expected = bind_generator(info.name, fresh);
+        std::vector<double> block(12 * coordinates);  // points 4 … 15 in one call
+        generator.points(state.data(), 4, 12, coordinates, block.data());
+        for (std::uint64_t i = 0; i < 16; ++i) {
+          std::vector<double> point(coordinates);
+          generator.point(state.data(), i, coordinates, point.data());
+          for (unsigned j = 0; j < coordinates; ++j) {
+            ASSERT_EQ(point[j], expected.sample(i, j)) << info.name << ":" << randomize << " " << seed << " " << i;
+            if (i >= 4) ASSERT_EQ(block[(i - 4) * coordinates + j], point[j]) << info.name << " " << i;
           }
         }
-    }
+      }
   }
   EXPECT_EQ(seeded, (std::set<std::string>{"faure:owen", "halton:owen", "grid:none", "grid:cp", "zaremba:none",
                                            "zaremba:cp", "kronecker:none", "kronecker:cp", "lattice-sequence:none",
