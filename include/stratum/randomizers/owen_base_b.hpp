@@ -173,7 +173,9 @@ class BaseBOwenScrambler {
         rest = next;
         if (!fresh) word = node_word(*word_key, prefix), fresh = true;
         const std::uint32_t shift = word_digit(d, word, word_power * b);
-        const std::uint32_t image_j = digit == 0 ? shift : image(d, keys[0], j, prefix, digit, shift);
+        // Both computed and one selected: whether a digit is 0 is data, a branch on it mispredicts.
+        const std::uint32_t permuted = image(d, keys[0], j, prefix, digit == 0 ? 1 : digit, shift);
+        const std::uint32_t image_j = digit == 0 ? shift : permuted;
         sum += static_cast<digits_detail::u128>(image_j) * weights[j];
         if (digit != 0) prefix += digit * power, fresh = false;
       }
