@@ -78,6 +78,7 @@ class Faure {
   std::uint64_t digit_word(std::uint64_t index, unsigned dim) const noexcept {
     if (base_ == 2) {              // y = C·a over GF(2): the columns of the index's 1 bits, xor-ed (as Sobol's)
       if (dim == 0) return index;  // C_0 = I, all 64 digits kept
+      if (index < 256) return low_words2_[std::size_t{dim} * 256 + index];  // a renderer's indices: no loop
       const std::uint64_t* columns = columns2_.data() + std::size_t{dim} * 64;
       std::uint64_t word = 0;
       for (; index != 0; index &= index - 1) word ^= columns[countr_zero64(index)];
@@ -134,6 +135,11 @@ class Faure {
     for (unsigned j = 0; j < dimensions_; ++j)
       for (unsigned c = 0; c < 64; ++c)
         for (unsigned r = 0; r <= c; ++r) columns2_[std::size_t{j} * 64 + c] |= std::uint64_t{generator(j, r, c)} << r;
+    low_words2_.assign(static_cast<std::size_t>(dimensions_) * 256, 0);
+    for (unsigned j = 0; j < dimensions_; ++j)
+      for (unsigned i = 1; i < 256; ++i)  // word(i) = word(i without its lowest bit) ⊕ that bit's column
+        low_words2_[std::size_t{j} * 256 + i] =
+            low_words2_[std::size_t{j} * 256 + (i & (i - 1))] ^ columns2_[std::size_t{j} * 64 + countr_zero64(i)];
   }
 
   unsigned dimensions_;
@@ -142,8 +148,9 @@ class Faure {
   digits_detail::FastDivider divider_;
   unsigned index_digits_ = 0;
   unsigned output_digits_ = 0;
-  std::vector<std::uint32_t> matrices_;  // dimensions × R × K, row-major per dimension
-  std::vector<std::uint64_t> columns2_;  // base 2: each column as a word (bit r: row r), dimensions × 64
+  std::vector<std::uint32_t> matrices_;    // dimensions × R × K, row-major per dimension
+  std::vector<std::uint64_t> columns2_;    // base 2: each column as a word (bit r: row r), dimensions × 64
+  std::vector<std::uint64_t> low_words2_;  // base 2: the digit words of indices < 256, dimensions × 256
 };
 
 }  // namespace stratum
