@@ -31,6 +31,7 @@
 
 #include <time.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -420,7 +421,9 @@ int register_pixel_sampler_draws() {
         ("BM_PixelSamplerDraws/" + sampler + (randomize.empty() ? "" : ":" + randomize)).c_str(), BM_PixelSamplerDraws,
         sampler, randomize)
         ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
+        ->UseRealTime()
+        // The least of the repetitions: a loaded machine only ever adds time.
+        ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
   return 0;
 }
 const int pixel_sampler_draws_registered = register_pixel_sampler_draws();
