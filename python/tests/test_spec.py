@@ -2,6 +2,7 @@
 the same parser as the CLI (docs/samplers.md), the same errors, the seed and
 thread rules."""
 import os
+import re
 
 import numpy as np
 import pytest
@@ -126,8 +127,9 @@ def test_randomizer_families_in_the_docs_are_the_registrys():
     # the randomizers the family accepts: a change of family fails here.
     root = os.path.join(os.path.dirname(__file__), os.pardir, os.pardir)
     with open(os.path.join(root, "docs", "samplers.md"), encoding="utf-8") as f:
-        rows = [line.split("|")[1:-1] for line in f if line.startswith("| `base") or line.startswith("| `rotation`")
-                or line.startswith("| `seeded")]
+        # A family's row: its name alone in the first cell (not a SamplerInfo member such as `seeded(request)`).
+        family_row = re.compile(r"^\| `(base[a-z0-9-]*|rotation|seeded[a-z0-9-]*)` \|")
+        rows = [line.split("|")[1:-1] for line in f if family_row.match(line)]
     assert len(rows) == 5
     samplers = stratum.samplers()
     for family, names, accepts, _ in rows:
