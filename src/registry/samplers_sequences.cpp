@@ -110,8 +110,7 @@ class OwenSeeded final : public SeededGenerator {
   }
   void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
              double* out) const noexcept override {
-    const BaseBOwenScrambler::View view = scrambler_.view(state);
-    for (unsigned j = 0; j < coordinates; ++j) out[j] = view.sample(digits_(index, j), j);
+    points(state, index, 1, coordinates, out);
   }
   void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
               double* out) const noexcept override {

@@ -300,15 +300,15 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
         }
       }
       if (const auto& seeded = continued_binder_->seeded()) {
-        cached.seeded.words.resize(seeded->state_words());
-        seeded->seed(seed, 2, cached.seeded.words.data());
+        cached.seeded.resize(seeded->state_words());
+        seeded->seed(seed, 2, cached.seeded.data());
       } else {
         cached.generator = continued_binder_->bind(seed, 0);
       }
       cached.stamp = pixel_stamp_, cached.n = n;
     }
     if (const auto& seeded = continued_binder_->seeded())
-      return seeded_array(*seeded, cached.seeded.words.data(), start, n, out);
+      return seeded_array(*seeded, cached.seeded.data(), start, n, out);
     const PointGenerator& generator = cached.generator;
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;

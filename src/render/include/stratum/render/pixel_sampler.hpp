@@ -182,7 +182,6 @@ class PixelSampler {
     std::vector<std::uint64_t> words;
     std::uint64_t stamp = 0;   ///< the pixel it was seeded for (pixel_stamp_)
     unsigned coordinates = 0;  ///< the coordinates seeded
-    std::uint32_t n = 0;       ///< a continued array's points per array
   };
   std::vector<SeededState> seeded_sets_;
   std::vector<std::uint64_t> seeded_scratch_;  ///< a per-sample array's state
@@ -209,7 +208,8 @@ class PixelSampler {
   /// binding per sample as for a pattern). Never allocates those points.
   struct ContinuedArray {
     PointGenerator generator;
-    SeededState seeded;       ///< instead of the generator, where the binder has a SeededGenerator
+    std::vector<std::uint64_t>
+        seeded;               ///< the seed's state instead of the generator, where the binder has a SeededGenerator
     std::uint64_t stamp = 0;  ///< the pixel it was bound for (pixel_stamp_)
     std::uint32_t n = 0;      ///< points per array
   };
