@@ -109,15 +109,22 @@ std::uint64_t search_korobov(std::uint64_t n, unsigned d, double gamma, unsigned
   return parameters[KorobovSearch::best_of(scores, parameters)];
 }
 
-PointSet fill_lattice(const Rank1Lattice& lattice, const SamplerRequest& request) {
-  const bool rotate = request.randomizer == Randomizer::cp;
-  const CranleyPattersonRotation rotation(request.seed);
-  return fill_index_addressable(lattice.count(), lattice.dimensions(), request.threads,
-                                [&](std::uint64_t i, unsigned j) {
-                                  const double value = lattice.sample(i, j);
-                                  return rotate ? rotation(value, j) : value;
-                                });
+/// The lattice of a request: z from generator= or a=, else the Korobov
+/// search's (its result depends on (n, d, gamma) only: done once per process,
+/// not per set or binding).
+Rank1Lattice lattice_of(const SamplerRequest& request) {
+  const std::uint64_t n = *request.n;
+  auto z = explicit_generator(request);
+  if (!z) {
+    const double gamma = param_gamma(request);
+    const auto best = shared_construction<std::uint64_t>(
+        std::tuple{n, request.d, gamma}, [&] { return search_korobov(n, request.d, gamma, request.threads); });
+    z = korobov_generator(n, *best, request.d);
+  }
+  return Rank1Lattice(n, std::span<const std::uint64_t>(z->data(), request.d));
 }
+
+Rank1Lattice fibonacci_of(const SamplerRequest& request) { return fibonacci_lattice(*request.n); }
 
 std::string nearby_fibonacci(std::uint64_t n) {
   unsigned k = 2;
@@ -137,6 +144,7 @@ std::vector<SamplerInfo> lattices() {
                      "for other n the golden-ratio lattice (1, g), g the integer nearest n/phi coprime to n",
       .min_dim = 2,
       .max_dim = 2,
+      .flags = {.index_addressable = true},
       .properties = {"rank-1 lattice", "Latin (one point per row and column)"},
       .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1: the classic Fibonacci lattice for n = 1, 2, 3, 5, 8, 13, ..., 987, 1597, ...; "
@@ -150,7 +158,9 @@ std::vector<SamplerInfo> lattices() {
                           nearby_fibonacci(*request.n) + ")");
           },
       .count = requested_count,
-      .generate = [](const SamplerRequest& request) { return fill_lattice(fibonacci_lattice(*request.n), request); },
+      .generate = generate_rotated(fibonacci_of),
+      .bind = bind_rotated(fibonacci_of),
+      .seeded = seeded_rotated(fibonacci_of),
   });
 
   list.push_back({
@@ -161,6 +171,7 @@ std::vector<SamplerInfo> lattices() {
                      "error in the weighted Korobov space (alpha = 2, weights gamma^j; P_2 of Sloan, Joe 1994)",
       .min_dim = 1,
       .max_dim = Rank1Lattice::max_dimensions,
+      .flags = {.index_addressable = true},
       .properties = {"rank-1 lattice", "Latin in every coordinate with gcd(z_j, n) = 1 (always for a= and the search)"},
       .randomization = {RandomizerFamily::rotation, Randomizer::none},
       .counts = "any n >= 1; the Korobov search (no generator=, no a=) takes n x d <= 2^26",
@@ -179,21 +190,9 @@ std::vector<SamplerInfo> lattices() {
                           "); give a= or generator= for larger lattices");
           },
       .count = requested_count,
-      .generate =
-          [](const SamplerRequest& request) {
-            const std::uint64_t n = *request.n;
-            auto z = explicit_generator(request);
-            if (!z) {  // the search's result depends on (n, d, gamma) only: done once per process (a renderer's set
-                       // per pixel and dimension would repeat it)
-              const double gamma = param_gamma(request);
-              const auto best = shared_construction<std::uint64_t>(std::tuple{n, request.d, gamma}, [&] {
-                return search_korobov(n, request.d, gamma, request.threads);
-              });
-              z = korobov_generator(n, *best, request.d);
-            }
-            const Rank1Lattice lattice(n, std::span<const std::uint64_t>(z->data(), request.d));
-            return fill_lattice(lattice, request);
-          },
+      .generate = generate_rotated(lattice_of),
+      .bind = bind_rotated(lattice_of),
+      .seeded = seeded_rotated(lattice_of),
   });
 
   list.push_back({

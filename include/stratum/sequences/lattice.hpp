@@ -62,7 +62,10 @@ class Rank1Lattice {
 
   /// (index · z_dim) mod n: the point's coordinate times n, exactly.
   STRATUM_HOST_DEVICE constexpr std::uint64_t numerator(std::uint64_t index, unsigned dim) const noexcept {
-    return static_cast<std::uint64_t>(static_cast<unsigned __int128>(index % count_) * generator_[dim] % count_);
+    const std::uint64_t i = index < count_ ? index : index % count_;  // a set's own indices: no division
+    // n ≤ 2^32: the product of two residues fits in 64 bits (a 128-bit remainder is a library call).
+    if (count_ <= (std::uint64_t{1} << 32)) return i * generator_[dim] % count_;
+    return static_cast<std::uint64_t>(static_cast<unsigned __int128>(i) * generator_[dim] % count_);
   }
 
   /// frac(index · z_dim / n), correctly rounded for n < 2^53.
