@@ -95,6 +95,10 @@ void HaltonPairTables::swap_codes3(std::uint64_t dimension_key, std::uint64_t* o
   swap_codes_of3(dimension_key, out);
 }
 
+std::uint64_t HaltonPairTables::base2_word(std::uint64_t seed) noexcept {
+  return zero_bits2(Rule(seed).dimension_key(0));  // RandomDigitPermutations' permutations
+}
+
 void HaltonPairTables::build(std::uint64_t seed, std::uint64_t n, Set& set, unsigned coordinates) const noexcept {
   const Rule rule(seed);  // RandomDigitPermutations' permutations
   // Base 2: the digit-0 images are the whole permutation (see the header).

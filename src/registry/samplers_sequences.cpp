@@ -219,6 +219,31 @@ static std::uint64_t fraction_bits(std::uint64_t i, std::uint64_t n) {
   return static_cast<std::uint64_t>((static_cast<unsigned __int128>(i) << 64) / n);
 }
 
+/// Hammersley's coordinate 0 under permute, xor and owen: i/N's binary
+/// digits scrambled with a key of its own (independent of the radical
+/// inverses' scramblers). In base 2 a random permutation of each digit is a
+/// random flip, so permute and xor are the same digital shift; owen is
+/// nested uniform scrambling.
+struct HammersleyFirst {
+  static constexpr std::uint64_t tag = 0x68616d30ULL;  // "ham0"
+  std::uint64_t n;
+  std::uint64_t shift;  ///< the digital shift's word (permute, xor)
+  OwenScrambler::Dimension nested;
+  bool owen;
+  HammersleyFirst(std::uint64_t count, std::uint64_t seed, Randomizer randomizer)
+      : n(count),
+        shift(shift_of(seed)),
+        nested(OwenScrambler(hash64(seed, tag)).dimension(0)),
+        owen(randomizer == Randomizer::owen) {}
+  static std::uint64_t shift_of(std::uint64_t seed) noexcept { return DigitalShift(hash64(seed, tag)).shift(0); }
+  double operator()(std::uint64_t i) const noexcept {
+    const std::uint64_t bits = fraction_bits(i, n);
+    return bits_to_double(owen ? nested(bits) : bits ^ shift);
+  }
+};
+
+static Hammersley hammersley_of(const SamplerRequest& request) { return Hammersley(*request.n, request.d); }
+
 /// Hammersley points: coordinate 0 is i/N randomized in base 2 (see the top
 /// of this file), the others are Halton's coordinates 0..d−2 under the same
 /// randomizer.
@@ -226,26 +251,8 @@ static PointSet generate_hammersley(const SamplerRequest& request) {
   const std::uint64_t n = *request.n;
   const unsigned d = request.d;
   const Randomizer randomizer = request.randomizer;
-  const Hammersley hammersley(n, d);
-  if (randomizer == Randomizer::cp) {
-    const CranleyPattersonRotation rotation(request.seed);
-    return fill_each(n, d, request.threads,
-                     [&](std::uint64_t i, unsigned j) { return rotation(hammersley.sample(i, j), j); });
-  }
-  if (randomizer == Randomizer::none)
-    return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned j) { return hammersley.sample(i, j); });
-  // permute, xor, owen: i/N's binary digits scrambled with a key of its own
-  // (independent of the radical inverses' scramblers). In base 2 a random
-  // permutation of each digit is a random flip, so permute and xor are the
-  // same digital shift; owen is nested uniform scrambling.
-  const std::uint64_t key = hash64(request.seed, 0x68616d30ULL /* "ham0" */);
-  const DigitalShift shift(key);
-  const auto nested = OwenScrambler(key).dimension(0);
-  const bool owen = randomizer == Randomizer::owen;
-  const auto first = [&](std::uint64_t i) {
-    const std::uint64_t bits = fraction_bits(i, n);
-    return bits_to_double(owen ? nested(bits) : shift(bits, 0));
-  };
+  if (randomizer == Randomizer::cp || randomizer == Randomizer::none) return generate_rotated(hammersley_of)(request);
+  const HammersleyFirst first(n, request.seed, randomizer);
   if (d == 1) return fill_each(n, d, request.threads, [&](std::uint64_t i, unsigned) { return first(i); });
   return std::move(*with_digit_scrambler(request, prime_bases(d - 1), n - 1, [&](const auto& scrambler) {
     return fill_by_columns(n, d, request.threads, [&](std::uint64_t row, std::size_t rows, unsigned j, double* out) {
@@ -253,6 +260,49 @@ static PointSet generate_hammersley(const SamplerRequest& request) {
       for (std::size_t k = 0; k < rows; ++k) out[k * d] = first(row + k);
     });
   }));
+}
+
+/// Hammersley's generator: the same points as generate_hammersley, one at a time.
+static PointGenerator bind_hammersley(const SamplerRequest& request) {
+  const std::uint64_t n = *request.n;
+  const unsigned d = request.d;
+  if (request.randomizer == Randomizer::cp || request.randomizer == Randomizer::none)
+    return bind_rotated(hammersley_of)(request);
+  const HammersleyFirst first(n, request.seed, request.randomizer);
+  if (d == 1) return PointGenerator(1, [first](std::uint64_t i, unsigned) { return first(i); });
+  return std::move(*with_digit_scrambler(request, prime_bases(d - 1), n - 1, [&](auto&& scrambler) {
+    using Scrambler = std::decay_t<decltype(scrambler)>;
+    auto shared = std::make_shared<const Scrambler>(std::forward<Scrambler>(scrambler));
+    return PointGenerator(
+        d, [shared, first](std::uint64_t i, unsigned j) { return j == 0 ? first(i) : shared->sample(i, j - 1); });
+  }));
+}
+
+/// Hammersley's 1D and 2D sets under permute, its default (a renderer's
+/// pixel sets) as a SeededGenerator: coordinate 0 is i/N under a digital
+/// shift, coordinate 1 Halton's base-2 coordinate under random digit
+/// permutations, which in base 2 are one word of flips (HaltonPairTables);
+/// a seed's state is those two words. nullptr otherwise (bind's path).
+class HammersleyPairSeeded final : public SeededGenerator {
+ public:
+  explicit HammersleyPairSeeded(std::uint64_t n) : n_(n) {}
+  std::size_t state_words() const noexcept override { return 2; }
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
+    state[0] = HammersleyFirst::shift_of(seed);
+    if (coordinates > 1) state[1] = HaltonPairTables::base2_word(seed);
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    out[0] = bits_to_double(fraction_bits(index, n_) ^ state[0]);
+    if (coordinates > 1) out[1] = digits_detail::fraction_to_double(reverse_bits64(index) ^ state[1]);
+  }
+
+ private:
+  std::uint64_t n_;
+};
+static std::shared_ptr<const SeededGenerator> seeded_hammersley(const SamplerRequest& request) {
+  if (request.randomizer != Randomizer::permute || request.d > 2) return nullptr;
+  return std::make_shared<const HammersleyPairSeeded>(*request.n);
 }
 
 /// Faure's generator: the request's randomizer applied to the digit words
@@ -325,6 +375,7 @@ std::vector<SamplerInfo> sequences() {
                      "nested scrambling; cp: rotation), so every randomizer but none is unbiased",
       .min_dim = 1,
       .max_dim = Hammersley::max_dimensions,
+      .flags = {.index_addressable = true},
       .properties = {"low-discrepancy", "Latin in dimension 0 (none, cp; permute, xor, owen at N = 2^k)",
                      "elementary intervals at N = b^k (none; permute, owen, xor: of (i/N, phi_2(i)) at N = 2^k)",
                      "unbiased (but none)"},
@@ -334,6 +385,8 @@ std::vector<SamplerInfo> sequences() {
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_hammersley,
+      .bind = bind_hammersley,
+      .seeded = seeded_hammersley,
   });
 
   list.push_back({

@@ -111,10 +111,10 @@ TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
         }
       }
   }
-  EXPECT_EQ(seeded,
-            (std::set<std::string>{"faure:owen", "halton:owen", "grid:none", "grid:cp", "zaremba:none", "zaremba:cp",
-                                   "kronecker:none", "kronecker:cp", "lattice-sequence:none", "lattice-sequence:cp",
-                                   "cmj:none", "fibonacci:none", "fibonacci:cp", "lattice:none", "lattice:cp"}));
+  EXPECT_EQ(seeded, (std::set<std::string>{"faure:owen", "halton:owen", "grid:none", "grid:cp", "zaremba:none",
+                                           "zaremba:cp", "kronecker:none", "kronecker:cp", "lattice-sequence:none",
+                                           "lattice-sequence:cp", "cmj:none", "fibonacci:none", "fibonacci:cp",
+                                           "lattice:none", "lattice:cp", "hammersley:permute"}));
 }
 
 TEST(SetBinder, GeneratesWhatGeneratePointsGeneratesForEverySeed) {

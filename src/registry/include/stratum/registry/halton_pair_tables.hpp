@@ -69,6 +69,8 @@ class HaltonPairTables {
   /// permutations code_permutations3 lists. The portable copies and the
   /// choice (vectorized()) are public for tests.
   static std::uint64_t zero_bits2(std::uint64_t dimension_key) noexcept;
+  /// The base-2 word of seed's set (build's zero_bits2): RandomDigitPermutations' dimension 0 in base 2.
+  static std::uint64_t base2_word(std::uint64_t seed) noexcept;
   static void swap_codes3(std::uint64_t dimension_key, std::uint64_t* out) noexcept;
   static std::uint64_t zero_bits2_portable(std::uint64_t dimension_key) noexcept;
   static void swap_codes3_portable(std::uint64_t dimension_key, std::uint64_t* out) noexcept;

@@ -55,7 +55,7 @@
 /// (bit-identical to RandomDigitPermutations; spp and array
 /// counts ≤ 2187, above which it builds RandomDigitPermutations). Where the
 /// registry gives a SeededGenerator (SamplerInfo::seeded: faure and halton
-/// under owen), a set's seed is a few keys written in place per pixel and
+/// under owen, the lattices, hammersley…), a set's seed is a few words written in place per pixel and
 /// dimension and its points are read from them; other samplers with a
 /// generator bind one per pixel and dimension, and those made as a whole
 /// set generate each set once per pixel and dimension through a SetBinder
