@@ -76,9 +76,19 @@ class Faure {
 
   /// Σ_r y_r b^r with y = C_dim · (digits of index) mod b, r < R(b).
   std::uint64_t digit_word(std::uint64_t index, unsigned dim) const noexcept {
-    if (base_ == 2) {              // y = C·a over GF(2): the columns of the index's 1 bits, xor-ed (as Sobol's)
-      if (dim == 0) return index;  // C_0 = I, all 64 digits kept
-      if (index < 256) return low_words2_[std::size_t{dim} * 256 + index];  // a renderer's indices: no loop
+    // Base 2 at a renderer's indices inline (C_0 = I, all 64 digits kept; a table below 256), the rest out of line.
+    if (base_ == 2 && (dim == 0 || index < 256)) return dim == 0 ? index : low_words2_[std::size_t{dim} * 256 + index];
+    return digit_word_general(index, dim);
+  }
+
+  template <class Real = double>
+  Real sample(std::uint64_t index, unsigned dim) const noexcept {
+    return to_unit<Real>(radical_inverse(base_, digit_word(index, dim), reciprocal_));
+  }
+
+ private:
+  [[gnu::noinline]] std::uint64_t digit_word_general(std::uint64_t index, unsigned dim) const noexcept {
+    if (base_ == 2) {  // y = C·a over GF(2): the columns of the index's 1 bits, xor-ed (as Sobol's)
       const std::uint64_t* columns = columns2_.data() + std::size_t{dim} * 64;
       std::uint64_t word = 0;
       for (; index != 0; index &= index - 1) word ^= columns[countr_zero64(index)];
@@ -104,12 +114,6 @@ class Faure {
     return word;
   }
 
-  template <class Real = double>
-  Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(radical_inverse(base_, digit_word(index, dim), reciprocal_));
-  }
-
- private:
   // C_j = P^j for j < s, from Pascal's triangle mod b and powers of j mod b.
   void build_matrices() {
     const unsigned rows = output_digits_, cols = index_digits_;
