@@ -36,12 +36,29 @@ std::vector<double> brute_force(std::uint64_t n, unsigned d, std::uint64_t seed,
 }
 
 TEST(BestCandidate, MatchesBruteForceMitchell) {
+  // Past BestCandidate::small_points the grids' engine, up to it the search without grids.
   for (unsigned d = 1; d <= 4; ++d)
     for (bool periodic : {true, false})
-      for (unsigned k : {1u, 10u}) {
-        const std::uint64_t n = d <= 2 ? 150 : 80;
-        EXPECT_EQ(BestCandidate(d, 21, k, periodic).generate(n), brute_force(n, d, 21, k, periodic))
-            << "d=" << d << " periodic=" << periodic << " k=" << k;
+      for (unsigned k : {1u, 10u})
+        for (const std::uint64_t n :
+             {std::uint64_t{d <= 2 ? 150u : 80u}, BestCandidate::small_points, std::uint64_t{5}})
+          EXPECT_EQ(BestCandidate(d, 21, k, periodic).generate(n), brute_force(n, d, 21, k, periodic))
+              << "d=" << d << " periodic=" << periodic << " k=" << k << " n=" << n;
+}
+
+// The small sets (no grids) are the engine's first points, for many seeds.
+TEST(BestCandidate, SmallSetsArePrefixesOfTheEngines) {
+  const std::uint64_t large = BestCandidate::small_points + 1;  // the engine's
+  for (unsigned d = 1; d <= 4; ++d)
+    for (bool periodic : {true, false})
+      for (std::uint64_t seed = 0; seed < 20; ++seed) {
+        const BestCandidate pattern(d, seed, 10, periodic);
+        const auto engine = pattern.generate(large);
+        for (const std::uint64_t n : {std::uint64_t{2}, std::uint64_t{4}, BestCandidate::small_points}) {
+          const auto small = pattern.generate(n);
+          ASSERT_TRUE(std::equal(small.begin(), small.end(), engine.begin()))
+              << "d=" << d << " periodic=" << periodic << " seed=" << seed << " n=" << n;
+        }
       }
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <boost/math/distributions/students_t.hpp>
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -40,6 +41,49 @@ TEST(Pmj02Bn, EveryPrefixAndAlignedBlockIsANet) {
           EXPECT_TRUE(stratum::testing::is_zero_net(as_points(xy, first, n)))
               << "candidates " << candidates << " seed " << seed << " block [" << first << ", " << first + n << ")";
     }
+}
+
+// The construction replayed by brute force: each point's fixed digits from
+// the point PMJ02 pairs it with, and of its candidates the first farthest
+// (toroidally) from every earlier point, all of them measured. Past
+// Pmj02Bn's grid-free prefix the grid must not change a single choice.
+std::vector<double> brute_force(std::uint64_t seed, unsigned candidates, std::uint64_t n) {
+  std::vector<std::uint64_t> bits(2 * n);
+  std::vector<double> xy(2 * n);
+  for (std::uint64_t p = 0; p < n; ++p) {
+    std::uint64_t top[2] = {0, 0}, free = ~std::uint64_t{0};
+    if (p != 0) {
+      const unsigned m = 63u - static_cast<unsigned>(std::countl_zero(p));
+      const std::uint64_t kept = ~std::uint64_t{0} << (63 - m);
+      for (unsigned c = 0; c < 2; ++c) {
+        const std::uint64_t j = (p ^ (std::uint64_t{1} << m)) ^ stratum::Pmj02::xor_value(c, m);
+        top[c] = (bits[2 * j + c] & kept) ^ (std::uint64_t{1} << (63 - m));
+      }
+      free = ~kept;
+    }
+    double best = -1;
+    for (unsigned k = 0; k < (p == 0 ? 1u : candidates); ++k) {
+      std::uint64_t candidate[2];
+      for (unsigned c = 0; c < 2; ++c) candidate[c] = top[c] | (Pmj02Bn::candidate_bits(seed, p, k, c) & free);
+      double nearest = 0;
+      if (p != 0) {
+        nearest = 1e300;
+        for (std::uint64_t q = 0; q < p; ++q) {
+          const double dx = std::abs(stratum::bits_to_double(candidate[0]) - xy[2 * q]);
+          const double dy = std::abs(stratum::bits_to_double(candidate[1]) - xy[2 * q + 1]);
+          nearest = std::min(nearest, std::pow(std::min(dx, 1 - dx), 2) + std::pow(std::min(dy, 1 - dy), 2));
+        }
+      }
+      if (nearest > best) best = nearest, bits[2 * p] = candidate[0], bits[2 * p + 1] = candidate[1];
+    }
+    xy[2 * p] = stratum::bits_to_double(bits[2 * p]), xy[2 * p + 1] = stratum::bits_to_double(bits[2 * p + 1]);
+  }
+  return xy;
+}
+
+TEST(Pmj02Bn, MatchesBruteForce) {
+  for (unsigned candidates : {1u, 10u})
+    for (std::uint64_t seed : {0u, 7u}) EXPECT_EQ(generate(seed, candidates, 700), brute_force(seed, candidates, 700));
 }
 
 TEST(Pmj02Bn, DeterministicAndProgressive) {

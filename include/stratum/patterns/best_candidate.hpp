@@ -45,6 +45,10 @@ class BestCandidate {
   static constexpr unsigned max_dimensions = 4;
   static constexpr unsigned default_candidates = 10;
   static constexpr unsigned max_candidates = 1000;
+  /// Up to this n every candidate is measured against every point (k·n³/6
+  /// distances), which costs less than the grids' upkeep (4 points: 0.2 µs
+  /// against 11 µs; 32: 80 against 330 µs; the grids win from about 64).
+  static constexpr std::uint64_t small_points = 32;
   /// Largest n: indices are 32-bit.
   static constexpr std::uint64_t max_points = std::uint64_t{1} << 31;
 
@@ -78,6 +82,18 @@ class BestCandidate {
   template <class Real = double>
   void generate(std::uint64_t n, Real* out) const {
     require(n >= 1 && n <= max_points, "n", n, "best-candidate takes 1 to 2^31 points");
+    if (n <= small_points) {
+      switch (dimensions_) {
+        case 1:
+          return run_small<1>(n, out);
+        case 2:
+          return run_small<2>(n, out);
+        case 3:
+          return run_small<3>(n, out);
+        default:
+          return run_small<4>(n, out);
+      }
+    }
     switch (dimensions_) {
       case 1:
         Engine<1>(*this, n).run(out);
@@ -142,6 +158,31 @@ class BestCandidate {
   static constexpr std::uint64_t tag_round = 0x4243'524f'554eULL;
   static constexpr std::uint64_t tag_low_bits = 0x4243'4c4f'5742ULL;
   static constexpr std::uint64_t golden = 0x9e3779b97f4a7c15ULL;
+
+  // Mitchell's rounds without grids: the engine's choices (it prunes only
+  // candidates that cannot win), for n ≤ small_points.
+  template <unsigned D, class Real>
+  void run_small(std::uint64_t n, Real* out) const {
+    double points[small_points * D], x[D];
+    first_point(seed_, D, points);
+    for (std::uint64_t i = 1; i < n; ++i) {
+      const std::uint64_t key = round_key(seed_, i);
+      const std::uint64_t count = static_cast<std::uint64_t>(candidates_) * i;
+      double best2 = -1;
+      std::uint64_t best_index = 0;
+      for (std::uint64_t candidate = 0; candidate < count; ++candidate) {
+        coordinates<D>(key, candidate, x);
+        double nearest2 = std::numeric_limits<double>::infinity();
+        for (std::uint64_t p = 0; p < i; ++p)
+          nearest2 = std::min(nearest2, NeighborGrid::distance_squared(x, points + p * D, D, periodic_));
+        if (nearest2 > best2) best2 = nearest2, best_index = candidate;
+      }
+      coordinates<D>(key, best_index, x);
+      for (unsigned j = 0; j < D; ++j)
+        points[i * D + j] = std::min(x[j] + low_bits(seed_, i, j), one_minus_epsilon_double);
+    }
+    for (std::uint64_t k = 0; k < n * D; ++k) out[k] = to_unit<Real>(points[k]);
+  }
 
   template <unsigned D>
   class Engine {

@@ -99,10 +99,18 @@ class NeighborGrid {
 
   /// Squared distance between two points (toroidal when periodic).
   double distance_squared(const double* a, const double* b) const noexcept {
+    return distance_squared(a, b, dimensions_, periodic_);
+  }
+  /// The same for points of [0, 1)^d without a grid. The wrap of axis_delta,
+  /// delta ∓ 1 past ±1/2, is exactly ±(1 − |delta|) there (Sterbenz), so its
+  /// square is that of the smaller of |delta| and 1 − |delta|: no branch on
+  /// the wrap's direction, which is random and mispredicts.
+  static double distance_squared(const double* a, const double* b, unsigned d, bool periodic) noexcept {
     double sum = 0;
-    for (unsigned j = 0; j < dimensions_; ++j) {
-      const double delta = axis_delta(a[j], b[j]);
-      sum += delta * delta;
+    for (unsigned j = 0; j < d; ++j) {
+      const double delta = b[j] - a[j];
+      const double along = periodic ? std::min(std::abs(delta), 1.0 - std::abs(delta)) : delta;
+      sum += along * along;
     }
     return sum;
   }

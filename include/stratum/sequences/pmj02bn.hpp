@@ -54,6 +54,12 @@ class Pmj02Bn {
 
   unsigned candidates() const noexcept { return candidates_; }
 
+  /// Replay hook (for tests): the random bits of coordinate c of candidate k
+  /// for point p; the candidate keeps its fixed digits and takes these in the free ones.
+  static std::uint64_t candidate_bits(std::uint64_t seed, std::uint64_t p, unsigned k, unsigned c) noexcept {
+    return hash64(hash64(seed, tag_candidate, p, k), c);
+  }
+
   /// The first n points as 64-bit binary fractions, (x, y) per point.
   std::vector<std::uint64_t> generate_bits(std::uint64_t n) const {
     require(n >= 1 && n <= max_points, "n", n, "pmj02bn takes 1 to 2^31 points");
@@ -76,7 +82,7 @@ class Pmj02Bn {
       std::uint64_t best[2] = {0, 0};
       double best_distance = -1;
       for (unsigned k = 0; k < (p == 0 ? 1u : candidates_); ++k) {
-        const std::uint64_t key = hash64(seed_, tag_candidate, p, k);
+        const std::uint64_t key = hash64(seed_, tag_candidate, p, k);  // candidate_bits' first link, shared
         const std::uint64_t candidate[2] = {top[0] | (hash64(key, 0) & free), top[1] | (hash64(key, 1) & free)};
         const double x[2] = {bits_to_double(candidate[0]), bits_to_double(candidate[1])};
         const double distance = p == 0 ? 0 : nearest_squared(grid, xy, x, p, best_distance);
@@ -97,12 +103,20 @@ class Pmj02Bn {
 
  private:
   static constexpr std::uint64_t tag_candidate = 0x706d'6a62'6e63ULL;  // "pmjbnc"
+  /// Up to this many placed points a candidate's nearest is found without the grid.
+  static constexpr std::uint64_t brute_points = 256;
 
   /// The squared toroidal distance from x to its nearest of the `placed`
   /// points, or any value ≤ `beat` once it is known not to exceed it (the
   /// candidate cannot win then).
   static double nearest_squared(const NeighborGrid& grid, const std::vector<double>& xy, const double* x,
                                 std::uint64_t placed, double beat) {
+    if (placed <= brute_points) {  // every point: fewer distances than the grid's cells a query visits
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::uint64_t i = 0; i < placed; ++i)
+        nearest = std::min(nearest, NeighborGrid::distance_squared(x, &xy[2 * i], 2, true));
+      return nearest;
+    }
     double radius = 1.5 / std::sqrt(static_cast<double>(placed));
     for (;;) {
       double nearest = std::numeric_limits<double>::infinity();
