@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <string>
 
 #include <boost/random/sobol.hpp>
 
@@ -128,6 +129,20 @@ void poisson_disk_maximal_2d(benchmark::State& state) {
       static_cast<double>(coordinates), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// Small 2D sets through the registry, a new seed per set (as a renderer's
+// pixel sets, §5.5): the patterns made by candidates or dart throwing, whose
+// fixed costs matter there, beside `random` (the registry's per-set floor).
+void small_set(benchmark::State& state, const std::string& sampler) {
+  stratum::SamplerRequest request;
+  request.n = static_cast<std::uint64_t>(state.range(0));
+  request.d = 2;
+  for (auto _ : state) {
+    auto points = stratum::generate_points(sampler, request);
+    benchmark::DoNotOptimize(points.data.get());
+    ++request.seed;
+  }
+}
+
 // A count every sampler accepts (a perfect square, fourth power and power of
 // two), large enough to leave the caches.
 constexpr std::int64_t kCount = 1 << 16;
@@ -142,6 +157,13 @@ int register_all() {
   benchmark::RegisterBenchmark("random-access/owen-base-b", owen_base_b_random_access)
       ->ArgsProduct({{2, 3, 29}, {4, 16}})
       ->ArgNames({"base", "log2_indices"});
+  for (const char* sampler : {"random", "n-rooks", "best-candidate", "pmj02bn", "poisson-disk"})
+    benchmark::RegisterBenchmark((std::string("small-set/") + sampler).c_str(), small_set, sampler)
+        ->Arg(4)
+        ->Arg(32)  // best-candidate's last grid-free size
+        ->Arg(256)
+        ->Arg(1024)
+        ->Unit(benchmark::kMicrosecond);
   for (unsigned threads : {1u, 2u})
     benchmark::RegisterBenchmark(("registry-threads/sobol/owen-hash/" + std::to_string(threads)).c_str(),
                                  registry_sampler, "sobol", "owen-hash", threads)
