@@ -165,6 +165,29 @@ TEST(PoissonDisk, RadiusForCountInvertsTheEstimate) {
   EXPECT_EQ(PoissonDisk::radius_for_count(1, 2, true), 1.0);
 }
 
+// The search stops once its bounds stop moving and the answer is cached per
+// thread: both give what the full 200-step bisection of the estimate gives,
+// for counts asked in turn (each a cache miss) and again (hits).
+TEST(PoissonDisk, RadiusForCountIsTheFullBisection) {
+  const auto full_bisection = [](double count, unsigned d, bool periodic) {
+    double lo = 1e-12, hi = 1.0;
+    if (PoissonDisk::estimated_count(d, hi, periodic) >= count) return hi;
+    for (int step = 0; step < 200; ++step) {
+      const double mid = std::sqrt(lo * hi);
+      (PoissonDisk::estimated_count(d, mid, periodic) >= count ? lo : hi) = mid;
+    }
+    return lo;
+  };
+  for (unsigned d = 1; d <= 4; ++d)
+    for (const bool periodic : {false, true})
+      for (double count = 1.5; count < 1e7; count *= 3.7) {
+        const double expected = full_bisection(count, d, periodic);
+        EXPECT_EQ(PoissonDisk::search_radius(count, d, periodic), expected) << d << " " << periodic << " " << count;
+        EXPECT_EQ(PoissonDisk::radius_for_count(count, d, periodic), expected);
+        EXPECT_EQ(PoissonDisk::radius_for_count(count, d, periodic), expected);  // cached
+      }
+}
+
 TEST(PoissonDisk, FloatOutputIsTheRoundedDoubleOutput) {
   const PoissonDisk disk(3, 0.1, 8);
   const auto d = disk.maximal_set<double>();

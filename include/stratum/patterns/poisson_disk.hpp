@@ -121,10 +121,7 @@ class PoissonDisk {
   /// torus; in the cube, points crowd the faces, which adds a layer: a
   /// measured factor (1 + c r)^d, c ≈ 0.6 to 0.7.
   static double estimated_count(unsigned dimensions, double radius, bool periodic) noexcept {
-    const double bulk = maximal_packing_density(dimensions) /
-                        (unit_ball_volume(dimensions) * std::pow(radius / 2, static_cast<double>(dimensions)));
-    const double boundary = periodic ? 1.0 : std::pow(1.0 + boundary_layer(dimensions) * radius, dimensions);
-    return std::max(1.0, bulk * boundary);
+    return estimated_count(dimensions, unit_ball_volume(dimensions), radius, periodic);
   }
 
   /// Upper bound on the size of any set with minimum distance ≥ r: balls of
@@ -143,11 +140,28 @@ class PoissonDisk {
   /// The radius whose maximal sets have about `count` points (inverse of
   /// estimated_count), at most 1.
   static double radius_for_count(double count, unsigned dimensions, bool periodic) noexcept {
+    // A renderer asks for the same count set after set: each thread keeps its last answer.
+    thread_local struct {
+      double count = -1, radius = 0;
+      unsigned dimensions = 0;
+      bool periodic = false;
+    } last;
+    if (last.count == count && last.dimensions == dimensions && last.periodic == periodic) return last.radius;
+    last = {count, search_radius(count, dimensions, periodic), dimensions, periodic};
+    return last.radius;
+  }
+
+  /// radius_for_count without its cache: a bisection in log scale of estimated_count.
+  static double search_radius(double count, unsigned dimensions, bool periodic) noexcept {
+    const double ball = unit_ball_volume(dimensions);  // once, not per step (a gamma function)
     double lo = 1e-12, hi = 1.0;
-    if (estimated_count(dimensions, hi, periodic) >= count) return hi;
+    if (estimated_count(dimensions, ball, hi, periodic) >= count) return hi;
+    // Bisection in log scale; lo always has estimate >= count and hi < count, so once the mean rounds to
+    // either end every later step leaves both as they are (after about 60 of the 200): stop there.
     for (int iteration = 0; iteration < 200; ++iteration) {
       const double mid = std::sqrt(lo * hi);
-      if (estimated_count(dimensions, mid, periodic) >= count) lo = mid;
+      if (mid == lo || mid == hi) break;
+      if (estimated_count(dimensions, ball, mid, periodic) >= count) lo = mid;
       else hi = mid;
     }
     return lo;
@@ -193,6 +207,14 @@ class PoissonDisk {
   }
 
  private:
+  /// estimated_count with the unit ball's volume given.
+  static double estimated_count(unsigned dimensions, double ball, double radius, bool periodic) noexcept {
+    const double bulk =
+        maximal_packing_density(dimensions) / (ball * std::pow(radius / 2, static_cast<double>(dimensions)));
+    const double boundary = periodic ? 1.0 : std::pow(1.0 + boundary_layer(dimensions) * radius, dimensions);
+    return std::max(1.0, bulk * boundary);
+  }
+
   static double boundary_layer(unsigned dimensions) noexcept {
     constexpr double layer[5] = {0, 0.65, 0.6, 0.69, 0.665};
     return layer[std::min(dimensions, 4u)];
