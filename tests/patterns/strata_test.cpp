@@ -110,6 +110,21 @@ TEST(IntegerRoot, ExactAroundPerfectPowers) {
   EXPECT_EQ(*checked_power(3, 4), 81u);
 }
 
+// Square roots (a hardware first guess): every n below 2^17 against counting,
+// and around k^2 for k up to 2^32 - 1.
+TEST(IntegerRoot, SquareRootsExact) {
+  std::uint64_t root = 0;
+  for (std::uint64_t n = 0; n < (1u << 17); ++n) {
+    while ((root + 1) * (root + 1) <= n) ++root;
+    ASSERT_EQ(integer_root(n, 2), root) << n;
+  }
+  for (std::uint64_t k : {3ull, 94906265ull, 94906266ull, (1ull << 26) + 1, (1ull << 32) - 2, (1ull << 32) - 1}) {
+    EXPECT_EQ(integer_root(k * k, 2), k) << k;
+    EXPECT_EQ(integer_root(k * k - 1, 2), k - 1) << k;
+    if (k < (1ull << 32) - 1) EXPECT_EQ(integer_root(k * k + 2 * k, 2), k) << k;  // (k + 1)^2 - 1
+  }
+}
+
 TEST(StrataShape, MixedRadixCellsWithDimensionZeroFastest) {
   const StrataShape shape({4, 3, 2});
   EXPECT_EQ(shape.count(), 24u);

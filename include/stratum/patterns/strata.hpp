@@ -74,7 +74,9 @@ constexpr std::optional<std::uint64_t> checked_power(std::uint64_t base, unsigne
 /// The largest r with r^d ≤ n (d ≥ 1), exactly.
 inline std::uint64_t integer_root(std::uint64_t n, unsigned d) noexcept {
   if (d == 1 || n <= 1) return n;
-  auto r = static_cast<std::uint64_t>(std::pow(static_cast<double>(n), 1.0 / d));
+  // A first guess (the loops below make it exact): a square root in hardware where d = 2, not a pow call.
+  const double guess = d == 2 ? std::sqrt(static_cast<double>(n)) : std::pow(static_cast<double>(n), 1.0 / d);
+  auto r = static_cast<std::uint64_t>(guess);
   while (r > 0) {
     const auto p = checked_power(r, d);
     if (p && *p <= n) break;
