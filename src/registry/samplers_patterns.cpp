@@ -66,8 +66,8 @@ static LatinSquare latin_square_of(const SamplerRequest& request) {
   // Each move from a proper square costs about m moves with its improper
   // excursion: bound the total near 2^28 moves (seconds).
   constexpr std::uint64_t max_moves = std::uint64_t{1} << 28;
-  if (kind == LatinSquare::Method::jacobson_matthews && steps > max_moves / m)  // the message built only then: a
-    // renderer makes a square per pixel and dimension
+  // The message is built only when the limit is exceeded: a renderer makes a square per pixel and dimension.
+  if (kind == LatinSquare::Method::jacobson_matthews && steps > max_moves / m)
     throw invalid_argument("steps", to_message_string(steps),
                            "Jacobson-Matthews takes at most 2^28 / m = " + std::to_string(max_moves / m) +
                                " proper moves here (m = " + std::to_string(m) +

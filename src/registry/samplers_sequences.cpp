@@ -236,9 +236,12 @@ struct HammersleyFirst {
         nested(OwenScrambler(hash64(seed, tag)).dimension(0)),
         owen(randomizer == Randomizer::owen) {}
   static std::uint64_t shift_of(std::uint64_t seed) noexcept { return DigitalShift(hash64(seed, tag)).shift(0); }
+  /// i/N under the digital shift `shift` (permute, xor).
+  static double shifted(std::uint64_t i, std::uint64_t n, std::uint64_t shift) noexcept {
+    return bits_to_double(fraction_bits(i, n) ^ shift);
+  }
   double operator()(std::uint64_t i) const noexcept {
-    const std::uint64_t bits = fraction_bits(i, n);
-    return bits_to_double(owen ? nested(bits) : bits ^ shift);
+    return owen ? bits_to_double(nested(fraction_bits(i, n))) : shifted(i, n, shift);
   }
 };
 
@@ -293,7 +296,7 @@ class HammersleyPairSeeded final : public SeededGenerator {
   }
   void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
              double* out) const noexcept override {
-    out[0] = bits_to_double(fraction_bits(index, n_) ^ state[0]);
+    out[0] = HammersleyFirst::shifted(index, n_, state[0]);
     if (coordinates > 1) out[1] = digits_detail::fraction_to_double(reverse_bits64(index) ^ state[1]);
   }
 

@@ -82,30 +82,18 @@ class BestCandidate {
   template <class Real = double>
   void generate(std::uint64_t n, Real* out) const {
     require(n >= 1 && n <= max_points, "n", n, "best-candidate takes 1 to 2^31 points");
-    if (n <= small_points) {
-      switch (dimensions_) {
-        case 1:
-          return run_small<1>(n, out);
-        case 2:
-          return run_small<2>(n, out);
-        case 3:
-          return run_small<3>(n, out);
-        default:
-          return run_small<4>(n, out);
-      }
-    }
     switch (dimensions_) {
       case 1:
-        Engine<1>(*this, n).run(out);
+        run<1>(n, out);
         break;
       case 2:
-        Engine<2>(*this, n).run(out);
+        run<2>(n, out);
         break;
       case 3:
-        Engine<3>(*this, n).run(out);
+        run<3>(n, out);
         break;
       default:
-        Engine<4>(*this, n).run(out);
+        run<4>(n, out);
         break;
     }
   }
@@ -158,6 +146,13 @@ class BestCandidate {
   static constexpr std::uint64_t tag_round = 0x4243'524f'554eULL;
   static constexpr std::uint64_t tag_low_bits = 0x4243'4c4f'5742ULL;
   static constexpr std::uint64_t golden = 0x9e3779b97f4a7c15ULL;
+
+  // Small sets without grids (small_points), larger ones through the engine's.
+  template <unsigned D, class Real>
+  void run(std::uint64_t n, Real* out) const {
+    if (n <= small_points) run_small<D>(n, out);
+    else Engine<D>(*this, n).run(out);
+  }
 
   // Mitchell's rounds without grids: the engine's choices (it prunes only
   // candidates that cannot win), for n ≤ small_points.
