@@ -1,6 +1,7 @@
 /// Registry entries of the finite patterns.
 #include <algorithm>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -128,6 +129,103 @@ static PointSet generate_latin_hypercube(const SamplerRequest& request) {
   return points;
 }
 
+/// N-rooks as a SeededGenerator: a seed's state is its permutations, one
+/// word per cell (coordinate j's n cells from word 1 + j·n), after the
+/// jitter chain's shared link (word 0), so a set's points need no
+/// allocation: the renderer's sets of a few points per pixel and dimension.
+/// The points of generate_latin_hypercube (tested).
+class LatinHypercubeSeeded final : public SeededGenerator {
+ public:
+  explicit LatinHypercubeSeeded(const SamplerRequest& request)
+      : shape_(*request.n, request.d, 0, request.values.flag("centered")) {}
+  std::size_t state_words() const noexcept override { return 1 + shape_.count() * shape_.dimensions(); }
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
+    const LatinHypercube lhs(shape_.count(), shape_.dimensions(), seed, shape_.centered());
+    state[0] = lhs.jitter_key();
+    for (unsigned j = 0; j < coordinates; ++j) lhs.permutation(j, state + 1 + j * shape_.count());
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    const std::uint64_t row = LatinHypercube::row_key_of(state[0], index);
+    for (unsigned j = 0; j < coordinates; ++j)
+      out[j] = shape_.coordinate_in_row(state[1 + j * shape_.count() + index], row, j);
+  }
+  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
+    for (std::uint64_t k = 0; k < count; ++k)
+      LatinHypercubeSeeded::point(state, first + k, coordinates, out + k * coordinates);
+  }
+
+ private:
+  LatinHypercube shape_;  ///< n, d and centered (its seed unused: coordinate_in_row reads none)
+};
+
+/// Multi-jittered as a SeededGenerator: a seed's state is each point's fine
+/// column (words 1 … n) and fine row (words n + 1 … 2n) after the jitter
+/// chain's shared link (word 0), the shuffles' scratch last; the points of
+/// the entry's generate (tested), without a set's allocation.
+class MultiJitteredSeeded final : public SeededGenerator {
+ public:
+  explicit MultiJitteredSeeded(const MultiJittered& shape) : shape_(shape) {}
+  std::size_t state_words() const noexcept override { return 1 + 2 * shape_.count() + shape_.scratch_size(); }
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
+    const MultiJittered mj(shape_.columns(), shape_.rows(), seed);
+    const std::uint64_t n = mj.count();
+    std::uint64_t* scratch = state + 1 + 2 * n;
+    state[0] = mj.jitter_key();
+    for (std::uint64_t i = 0; i < mj.columns(); ++i)
+      mj.column_cells(i, scratch, [&](std::uint64_t index, std::uint64_t cell) { state[1 + index] = cell; });
+    if (coordinates < 2) return;
+    for (std::uint64_t j = 0; j < mj.rows(); ++j)
+      mj.row_cells(j, scratch, [&](std::uint64_t index, std::uint64_t cell) { state[1 + n + index] = cell; });
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    for (unsigned j = 0; j < coordinates; ++j)
+      out[j] = shape_.coordinate(state[1 + j * shape_.count() + index], state[0], index, j);
+  }
+  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
+    for (std::uint64_t k = 0; k < count; ++k)
+      MultiJitteredSeeded::point(state, first + k, coordinates, out + k * coordinates);
+  }
+
+ private:
+  MultiJittered shape_;  ///< columns and rows (its seed unused: coordinate reads none)
+};
+
+/// A Latin square as a SeededGenerator: a seed's state is the jitter
+/// chain's shared link (word 0) and, where the symbol coordinate is asked,
+/// the square's symbols (words 1 … n). Rows and columns need no square, so
+/// the renderer's 2D sets (the first two coordinates) cost no chain at all.
+/// The points of the entry's generate (tested).
+class LatinSquareSeeded final : public SeededGenerator {
+ public:
+  explicit LatinSquareSeeded(const LatinSquare& shape) : shape_(shape) {}
+  std::size_t state_words() const noexcept override { return 1 + shape_.count(); }
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
+    const LatinSquare square(shape_.order(), seed, shape_.method(), shape_.steps());
+    state[0] = square.jitter_key();
+    if (coordinates < 3) return;
+    std::vector<std::uint32_t> symbols(square.count()), scratch(square.scratch_size());  // the request's memory
+    square.fill_symbols(symbols.data(), scratch.data());
+    std::copy(symbols.begin(), symbols.end(), state + 1);
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    for (unsigned j = 0; j < coordinates; ++j)
+      out[j] = shape_.coordinate_from(state[0], index, j, j == 2 ? static_cast<std::uint32_t>(state[1 + index]) : 0);
+  }
+  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
+    for (std::uint64_t k = 0; k < count; ++k)
+      LatinSquareSeeded::point(state, first + k, coordinates, out + k * coordinates);
+  }
+
+ private:
+  LatinSquare shape_;  ///< order, method and steps (its seed unused: coordinate_from reads none)
+};
+
 static SamplerInfo latin_hypercube_entry(std::string name, std::string description) {
   return {
       .name = std::move(name),
@@ -143,6 +241,9 @@ static SamplerInfo latin_hypercube_entry(std::string name, std::string descripti
       .validate = nullptr,
       .count = requested_count,
       .generate = generate_latin_hypercube,
+      .seeded = [](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
+        return std::make_shared<const LatinHypercubeSeeded>(request);
+      },
   };
 }
 
@@ -258,6 +359,9 @@ std::vector<SamplerInfo> patterns() {
             });
             return points;
           },
+      .seeded = [](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
+        return std::make_shared<const MultiJitteredSeeded>(multi_jittered_of(request));
+      },
   });
 
   list.push_back({
@@ -338,10 +442,14 @@ std::vector<SamplerInfo> patterns() {
             std::vector<std::uint32_t> symbols(square.count());
             std::vector<std::uint32_t> scratch(square.scratch_size());
             square.fill_symbols(symbols.data(), scratch.data());
+            const std::uint64_t key = square.jitter_key();
             return fill_index_addressable(*request.n, 3, request.threads, [&](std::uint64_t i, unsigned j) {
-              return square.coordinate(i, j, symbols[i]);
+              return square.coordinate_from(key, i, j, symbols[i]);
             });
           },
+      .seeded = [](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
+        return std::make_shared<const LatinSquareSeeded>(latin_square_of(request));
+      },
   });
 
   list.push_back({

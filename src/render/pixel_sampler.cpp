@@ -71,6 +71,8 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   has_spacetime_ = !spacetime_.empty();
   tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
   if (info.bind && !keyed_ && !tables_) set_binder_.emplace(name, set_request(seed_, settings_.spp, offset_));
+  if (!info.bind && !keyed_ && !tables_) set_maker_.emplace(name, set_request(seed_, settings_.spp, offset_));
+  pixel_seeded_ = set_binder_ ? set_binder_->seeded() : set_maker_ ? set_maker_->seeded() : nullptr;
   spp_root_ = integer_root(settings_.spp, 2);
   if (info.zsobol_image) zsobol_.emplace(info.zsobol_image(std::max(1u, settings_.resolution), settings_.spp, seed_));
   if (info.ranked_image) ranked_bn_.emplace(info.ranked_image(settings_.spp, seed_));
@@ -80,7 +82,7 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   // The validated choices and per-render constants; the caches start empty.
   keyed_ = other.keyed_, tables_ = other.tables_, tables_direct_ = other.tables_direct_;
   set_binder_ = other.set_binder_, array_binder_ = other.array_binder_, continued_binder_ = other.continued_binder_;
-  set_maker_ = other.set_maker_, array_maker_ = other.array_maker_;
+  set_maker_ = other.set_maker_, array_maker_ = other.array_maker_, pixel_seeded_ = other.pixel_seeded_;
   refused_ = other.refused_;
   arrays_continue_ = other.arrays_continue_, sampler_dims_ = other.sampler_dims_;
   spacetime_ = other.spacetime_;
@@ -157,12 +159,7 @@ const PointSet& PixelSampler::set_for(std::uint32_t dimension) {
   PointSet& set = sets_[dimension];
   if (set.n != 0) return set;
   const std::uint64_t seed = hash64_extend(pixel_mix_, dimension);
-  if (keyed_ || tables_) {
-    set = draw(settings_.sampler, settings_.spp, 2, seed, offset_);
-  } else {
-    if (!set_maker_) set_maker_.emplace(settings_.sampler, set_request(seed, settings_.spp, offset_));
-    set = set_maker_->generate(seed);
-  }
+  set = keyed_ || tables_ ? draw(settings_.sampler, settings_.spp, 2, seed, offset_) : set_maker_->generate(seed);
   return set;
 }
 
@@ -232,8 +229,8 @@ std::array<double, 2> PixelSampler::table_point_miss(std::uint32_t dimension, un
 }
 
 std::array<double, 2> PixelSampler::get_2d_slow(unsigned coordinates) {
-  if (set_binder_ && set_binder_->seeded()) {
-    const SeededGenerator& generator = *set_binder_->seeded();
+  if (pixel_seeded_) {
+    const SeededGenerator& generator = *pixel_seeded_;
     const std::uint32_t dimension = dimension_++;
     if (seeded_sets_.size() <= dimension) seeded_sets_.resize(dimension + 1);
     SeededState& state = seeded_sets_[dimension];
@@ -328,6 +325,12 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
   const bool made_whole = start == 0 && !keyed_ && !tables_;  // a pattern's set per sample, through its SetBinder
   if (made_whole && (!array_maker_ || array_maker_->count() != n))
     array_maker_.emplace(settings_.sampler, set_request(seed, n, 0));
+  if (made_whole && array_maker_->seeded()) {  // the set's state written in place (n-rooks: its permutations)
+    const SeededGenerator& seeded = *array_maker_->seeded();
+    seeded_scratch_.resize(seeded.state_words());
+    seeded.seed(seed, 2, seeded_scratch_.data());
+    return seeded_array(seeded, seeded_scratch_.data(), 0, n, out);
+  }
   const PointSet set =  // points start … start + n − 1
       made_whole ? array_maker_->generate(seed) : draw(settings_.sampler, n, 2, seed, start);
   for (std::uint32_t i = 0; i < n; ++i) out[i] = {set(i, 0), set(i, 1)};

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -157,4 +158,81 @@ TEST(SetBinder, GeneratesWhatGeneratePointsGeneratesForEverySeed) {
   SamplerRequest bad;
   bad.n = 7, bad.d = 2;
   EXPECT_THROW(SetBinder("jittered", bad), invalid_argument);  // 7 is not k^2
+}
+
+TEST(SetBinder, SeededPatternsDrawWhatGenerateDraws) {
+  // A pattern made as a whole set may write a seed's construction into a
+  // SeededGenerator's state (n-rooks its permutations, multi-jittered its
+  // fine cells, latin-square its symbols, only where coordinate 2 is asked):
+  // point and points then give generate_points' set, for the leading
+  // coordinates asked and for all, at several counts, dimensions and
+  // parameters. Samplers with a per-point generator keep GeneratorBinder's.
+  struct Case {
+    const char* name;
+    std::uint64_t n;
+    unsigned d;
+    std::map<std::string, std::string> params;
+  };
+  const std::vector<Case> cases = {
+      {"n-rooks", 1, 1, {}},
+      {"n-rooks", 4, 2, {}},
+      {"n-rooks", 37, 5, {}},
+      {"n-rooks", 16, 3, {{"centered", "1"}}},
+      {"latin-hypercube", 9, 2, {}},
+      {"multi-jittered", 4, 2, {}},
+      {"multi-jittered", 7, 2, {}},
+      {"multi-jittered", 24, 2, {{"strata", "6x4"}}},
+      {"latin-square", 4, 3, {}},
+      {"latin-square", 49, 3, {}},
+      {"latin-square", 25, 3, {{"method", "permuted-cyclic"}}},
+  };
+  for (const Case& c : cases) {
+    SamplerRequest request;
+    request.n = c.n, request.d = c.d, request.params = c.params;
+    const SetBinder binder(c.name, request);
+    ASSERT_TRUE(binder.seeded()) << c.name;
+    const SeededGenerator& generator = *binder.seeded();
+    std::vector<std::uint64_t> state(generator.state_words());
+    for (const std::uint64_t seed : {0ull, 3ull, 0xfeedfacecafebeefull}) {
+      SamplerRequest fresh = request;
+      fresh.seed = seed;
+      const PointSet expected = generate_points(c.name, fresh);
+      for (unsigned coordinates = 1; coordinates <= c.d; ++coordinates) {
+        std::fill(state.begin(), state.end(), 0);  // nothing left from the last seed
+        generator.seed(seed, coordinates, state.data());
+        std::vector<double> all(c.n * coordinates), point(coordinates);
+        generator.points(state.data(), 0, c.n, coordinates, all.data());
+        for (std::uint64_t i = 0; i < c.n; ++i) {
+          generator.point(state.data(), i, coordinates, point.data());
+          for (unsigned j = 0; j < coordinates; ++j) {
+            ASSERT_EQ(point[j], expected(i, j)) << c.name << " n " << c.n << " seed " << seed << " " << i << "," << j;
+            ASSERT_EQ(all[i * coordinates + j], point[j]) << c.name << " " << i;
+          }
+        }
+      }
+    }
+  }
+  // The exact set of whole-set patterns with one, so a new one is tested here.
+  std::set<std::string> seeded;
+  for (const SamplerInfo& info : samplers()) {
+    if (info.bind) continue;
+    SamplerRequest request;
+    request.d = std::max(2u, info.min_dim);
+    for (const std::uint64_t n : {16ull, 64ull}) {
+      request.n = n;
+      try {
+        validate_request(info, request);
+        break;
+      } catch (const invalid_argument&) {
+        request.n.reset();
+      }
+    }
+    ASSERT_TRUE(request.n.has_value()) << info.name;
+    for (const std::string& randomize : info.randomizers) {
+      request.randomize = randomize;
+      if (SetBinder(info.name, request).seeded()) seeded.insert(info.name + ":" + randomize);
+    }
+  }
+  EXPECT_EQ(seeded, (std::set<std::string>{"n-rooks:none", "latin-hypercube:none", "multi-jittered:none",
+                                           "latin-square:none"}));
 }

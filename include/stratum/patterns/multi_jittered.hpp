@@ -80,9 +80,10 @@ class MultiJittered {
  public:
   MultiJittered(std::uint64_t columns, std::uint64_t rows, std::uint64_t seed)
       : columns_(columns), rows_(rows), seed_(seed) {
-    require(columns >= 1 && rows >= 1 && columns <= (std::uint64_t{1} << 52) / rows, "strata",
-            std::to_string(columns) + "x" + std::to_string(rows),
-            "multi-jittered needs at least one column and row and at most 2^52 points");
+    // The value's text is built only on failure: a renderer makes a set per pixel and dimension.
+    if (!(columns >= 1 && rows >= 1 && columns <= (std::uint64_t{1} << 52) / rows))
+      throw invalid_argument("strata", std::to_string(columns) + "x" + std::to_string(rows),
+                             "multi-jittered needs at least one column and row and at most 2^52 points");
   }
 
   /// The m × k factorization of n with m ≤ k and m as close to √n as
@@ -104,20 +105,18 @@ class MultiJittered {
   /// Writes the x coordinates of coarse column i into out (row-major n × 2).
   template <class Real = double, class Index>
   void fill_x(std::uint64_t column, Real* out, Index* scratch) const noexcept {
-    random_permutation(scratch, rows_, hash64(seed_, 0x4d4a58ULL, column));
-    for (std::uint64_t j = 0; j < rows_; ++j) {
-      const std::uint64_t index = j * columns_ + column;
-      out[2 * index] = cell_coordinate<Real>(column * rows_ + scratch[j], jitter(index, 0), count());
-    }
+    const std::uint64_t key = jitter_key();
+    column_cells(column, scratch, [&](std::uint64_t index, std::uint64_t cell) {
+      out[2 * index] = coordinate<Real>(cell, key, index, 0);
+    });
   }
   /// Writes the y coordinates of coarse row j into out.
   template <class Real = double, class Index>
   void fill_y(std::uint64_t row, Real* out, Index* scratch) const noexcept {
-    random_permutation(scratch, columns_, hash64(seed_, 0x4d4a59ULL, row));
-    for (std::uint64_t i = 0; i < columns_; ++i) {
-      const std::uint64_t index = row * columns_ + i;
-      out[2 * index + 1] = cell_coordinate<Real>(row * columns_ + scratch[i], jitter(index, 1), count());
-    }
+    const std::uint64_t key = jitter_key();
+    row_cells(row, scratch, [&](std::uint64_t index, std::uint64_t cell) {
+      out[2 * index + 1] = coordinate<Real>(cell, key, index, 1);
+    });
   }
   /// All count() points, row-major (x, y), with scratch_size() integers of scratch.
   template <class Real = double, class Index>
@@ -126,10 +125,30 @@ class MultiJittered {
     for (std::uint64_t j = 0; j < rows_; ++j) fill_y(j, out, scratch);
   }
 
- private:
-  double jitter(std::uint64_t index, unsigned dim) const noexcept {
-    return uniform01<double>(hash64(seed_, 0x4d4a4a4954ULL), index, dim);
+  /// visit(index, cell) for the points of coarse column i: their fine
+  /// columns (the x intervals of n), after shuffling them in the column
+  /// with rows() integers of scratch.
+  template <class Index, class Visit>
+  void column_cells(std::uint64_t column, Index* scratch, Visit visit) const noexcept {
+    random_permutation(scratch, rows_, hash64(seed_, 0x4d4a58ULL, column));
+    for (std::uint64_t j = 0; j < rows_; ++j) visit(j * columns_ + column, column * rows_ + scratch[j]);
   }
+  /// visit(index, cell) for the points of coarse row j: their fine rows.
+  template <class Index, class Visit>
+  void row_cells(std::uint64_t row, Index* scratch, Visit visit) const noexcept {
+    random_permutation(scratch, columns_, hash64(seed_, 0x4d4a59ULL, row));
+    for (std::uint64_t i = 0; i < columns_; ++i) visit(row * columns_ + i, row * columns_ + scratch[i]);
+  }
+  /// The jitter hashes as a chain: uniform01(hash64(seed, tag), index, dim)
+  /// = bits of hash64_extend(hash64_extend(jitter_key(), index), dim).
+  std::uint64_t jitter_key() const noexcept { return hash64(hash64(seed_, 0x4d4a4a4954ULL)); }
+  /// Coordinate dim of point `index` in its fine interval `cell`, from jitter_key().
+  template <class Real = double>
+  Real coordinate(std::uint64_t cell, std::uint64_t jitter_key, std::uint64_t index, unsigned dim) const noexcept {
+    return cell_coordinate<Real>(cell, bits_to_double(hash64_extend(hash64_extend(jitter_key, index), dim)), count());
+  }
+
+ private:
   std::uint64_t columns_;
   std::uint64_t rows_;
   std::uint64_t seed_;

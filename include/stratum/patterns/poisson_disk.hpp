@@ -76,8 +76,10 @@ class PoissonDisk {
             "Poisson-disk sampling supports d = 1 to 4");
     require(radius > 0 && radius <= 1, "radius", radius, "must be in (0, 1]");
     require(candidates >= 1 && candidates <= max_candidates, "candidates", candidates, "must be in [1, 100000]");
-    require(grid_bytes(dimensions, radius) <= 0x1.0p40, "radius", radius,
-            "too small for d = " + std::to_string(dimensions) + ": the background grid would exceed 2^40 bytes");
+    if (grid_bytes(dimensions, radius) > 0x1.0p40)  // the message built only on failure: a set per pixel and dimension
+      throw invalid_argument(
+          "radius", to_message_string(radius),
+          "too small for d = " + std::to_string(dimensions) + ": the background grid would exceed 2^40 bytes");
   }
 
   unsigned dimensions() const noexcept { return dimensions_; }
@@ -180,10 +182,11 @@ class PoissonDisk {
   std::vector<Real> subset(std::uint64_t n) const {
     std::vector<double> points = generate_maximal();
     const std::uint64_t found = points.size() / dimensions_;
-    require(n >= 1 && n <= found, "n", n,
-            "a maximal Poisson-disk set with radius " + to_message_string(radius_) +
-                " in d = " + std::to_string(dimensions_) + " has " + std::to_string(found) + " points for seed " +
-                std::to_string(seed_) + "; ask for at most that many or give a smaller radius");
+    if (n < 1 || n > found)  // the message built only on failure, as above
+      throw invalid_argument("n", to_message_string(n),
+                             "a maximal Poisson-disk set with radius " + to_message_string(radius_) + " in d = " +
+                                 std::to_string(dimensions_) + " has " + std::to_string(found) + " points for seed " +
+                                 std::to_string(seed_) + "; ask for at most that many or give a smaller radius");
     return convert<Real>(thin(points, n, dimensions_, periodic_));
   }
 

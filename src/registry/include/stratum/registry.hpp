@@ -191,7 +191,9 @@ struct SamplerInfo {
   std::function<PointGenerator(const SamplerRequest&)> bind{};
   /// The request's generator as a SeededGenerator, where the sampler has
   /// one under the request's randomizer (else nullptr): GeneratorBinder
-  /// builds it once, and the renderer draws its sets through it.
+  /// builds it once, and the renderer draws its sets through it. A pattern
+  /// made as a whole set (no bind) may have one too, whose state is the
+  /// set's construction (n-rooks: its permutations): SetBinder builds it.
   std::function<std::shared_ptr<const SeededGenerator>(const SamplerRequest&)> seeded{};
   /// Its 2D sets under a randomizer as keyed pairs (patterns/keyed_pairs.hpp:
   /// points from a key of the seed, no setup per set), where it has them,

@@ -184,6 +184,9 @@ class PixelSampler {
     unsigned coordinates = 0;  ///< the coordinates seeded
   };
   std::vector<SeededState> seeded_sets_;
+  /// The pixel sets' SeededGenerator: set_binder_'s, or set_maker_'s (a
+  /// pattern made as a whole set whose state is its construction), or null.
+  std::shared_ptr<const SeededGenerator> pixel_seeded_;
   std::vector<std::uint64_t> seeded_scratch_;  ///< a per-sample array's state
   std::vector<double> seeded_points_;          ///< an array's points as SeededGenerator::points writes them
   /// out[i] = point start + i of a seeded state (i < n).
@@ -198,7 +201,9 @@ class PixelSampler {
   std::optional<GeneratorBinder> set_binder_, array_binder_;
   /// Samplers without a generator (or a direct path) make each set whole:
   /// their requests validated once (SetBinder), the pixel sets' and the
-  /// per-sample arrays' (for the last array count), then generated per seed.
+  /// per-sample arrays' (for the last array count), then generated per seed,
+  /// or seeded in place where the SetBinder has a SeededGenerator (n-rooks,
+  /// multi-jittered, latin-square: the set's construction as its state).
   std::optional<SetBinder> set_maker_, array_maker_;
   /// A progressive sampler's shadow-ray arrays through its generator: one
   /// seed per pixel and array dimension (tag_continued) for all its samples,
