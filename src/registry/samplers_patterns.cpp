@@ -226,6 +226,30 @@ class LatinSquareSeeded final : public SeededGenerator {
   LatinSquare shape_;  ///< order, method and steps (its seed unused: coordinate_from reads none)
 };
 
+/// cmj as a SeededGenerator: the construction (its domains and dividers)
+/// built once, a seed's state Kensler's pattern p alone; a point's shuffled
+/// index serves both coordinates. The points of its generator (tested).
+class CmjSeeded final : public SeededGenerator {
+ public:
+  explicit CmjSeeded(const CorrelatedMultiJittered& shape) : shape_(shape) {}
+  std::size_t state_words() const noexcept override { return 1; }
+  void seed(std::uint64_t seed, unsigned, std::uint64_t* state) const noexcept override {
+    state[0] = CorrelatedMultiJittered::pattern_of(seed);
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    shape_.sample_for(static_cast<std::uint32_t>(state[0]), index, coordinates, out);
+  }
+  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
+    for (std::uint64_t k = 0; k < count; ++k)
+      shape_.sample_for(static_cast<std::uint32_t>(state[0]), first + k, coordinates, out + k * coordinates);
+  }
+
+ private:
+  CorrelatedMultiJittered shape_;  ///< n, aspect (its own pattern unused)
+};
+
 static SamplerInfo latin_hypercube_entry(std::string name, std::string description) {
   return {
       .name = std::move(name),
@@ -380,11 +404,10 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(cmj_pattern),
       .bind = bind_rotated(cmj_pattern),
-      .seeded = seeded_by_value([](const SamplerRequest& request) {
-        return [n = *request.n, aspect = aspect_of(request)](std::uint64_t seed) {
-          return CorrelatedMultiJittered(n, seed, aspect);
-        };
-      }),
+      .seeded = [](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
+        if (request.randomizer != Randomizer::none) return nullptr;
+        return std::make_shared<const CmjSeeded>(cmj_pattern(request));
+      },
   });
 
   list.push_back({

@@ -3,12 +3,10 @@
 /// point buffers and deterministic parallel filling.
 #include <bit>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <new>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -137,45 +135,6 @@ auto seeded_rotated(Make make) {
     using Construction = std::decay_t<decltype(make(request))>;
     return std::make_shared<const RotatedSeeded<Construction>>(make(request), request.d,
                                                                request.randomizer == Randomizer::cp);
-  };
-}
-
-/// A construction made from its seed in a few operations and trivially
-/// copyable (cmj: Kensler's pattern number and grid) as a SeededGenerator
-/// under randomizer none: a seed's state is the construction itself, copied
-/// into the caller's words. `make` maps a seed to the construction (the
-/// request's other parameters bound once).
-template <class Make>
-class ByValueSeeded final : public SeededGenerator {
-  using Construction = std::decay_t<std::invoke_result_t<const Make&, std::uint64_t>>;
-  static_assert(std::is_trivially_copyable_v<Construction>);
-
- public:
-  explicit ByValueSeeded(Make make) : make_(std::move(make)) {}
-  std::size_t state_words() const noexcept override { return (sizeof(Construction) + 7) / 8; }
-  void seed(std::uint64_t seed, unsigned, std::uint64_t* state) const noexcept override {
-    const Construction construction = make_(seed);  // the request was validated: make does not throw
-    std::memcpy(state, &construction, sizeof construction);
-  }
-  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
-             double* out) const noexcept override {
-    alignas(Construction) unsigned char bytes[sizeof(Construction)];
-    std::memcpy(bytes, state, sizeof bytes);
-    const auto& construction = *std::launder(reinterpret_cast<const Construction*>(bytes));
-    for (unsigned j = 0; j < coordinates; ++j) out[j] = construction.sample(index, j);
-  }
-
- private:
-  Make make_;
-};
-/// SamplerInfo::seeded of such a construction: maker(request) returns the seed → construction map (nullptr past
-/// randomizer none: bind's path).
-template <class Maker>
-auto seeded_by_value(Maker maker) {
-  return [maker](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
-    if (request.randomizer != Randomizer::none) return nullptr;
-    using Make = decltype(maker(request));
-    return std::make_shared<const ByValueSeeded<Make>>(maker(request));
   };
 }
 

@@ -94,6 +94,20 @@ TEST(KenslerPermute, IsABijection) {
     }
 }
 
+// The prepared domain (walk mask and p mod l by a FastDivider) permutes as
+// kensler_permute does, for every l kind: 1, powers of two, others, near 2^32.
+TEST(KenslerPermute, PreparedDomainsPermuteAlike) {
+  for (std::uint32_t l : {1u, 2u, 3u, 4u, 7u, 64u, 100u, 4097u, 65536u, 0x7fffffffu, 0xfffffffeu, 0xffffffffu}) {
+    const KenslerDomain domain(l);
+    EXPECT_EQ(domain.size(), l);
+    for (std::uint32_t p : {0u, 1u, 12345u, 0x9e3779b9u, 0xfffffffeu, 0xffffffffu})
+      for (std::uint64_t k = 0; k < 200; ++k) {
+        const auto i = static_cast<std::uint32_t>(k < 100 ? k % l : hash64(l, p, k) % l);
+        ASSERT_EQ(domain.permute(i, p), kensler_permute(i, l, p)) << "l=" << l << " p=" << p << " i=" << i;
+      }
+  }
+}
+
 // The memo's listings transcribed literally (float arithmetic, 32-bit sums):
 // an oracle for the index-addressable double port.
 std::uint32_t memo_permute(std::uint32_t i, std::uint32_t l, std::uint32_t p) {

@@ -96,7 +96,7 @@ TEST(Digits, FastDividerIsExactEverywhere) {
   for (std::uint64_t k = 0; k < 2000; ++k) numerators.push_back(hash64(11, k) >> (k % 64));
   for (std::uint64_t divisor :
        {2ull, 3ull, 5ull, 7ull, 243ull, 729ull, 2187ull, 3125ull, 4096ull, 4093ull, 8161ull, 65536ull, 65521ull}) {
-    const digits_detail::FastDivider divider(divisor);
+    const FastDivider divider(divisor);
     EXPECT_GE(divider.limit(), std::uint64_t{1} << 48);
     for (std::uint64_t n : numerators) ASSERT_EQ(divider.quotient(n), n / divisor) << n << " / " << divisor;
     for (std::uint64_t n : {divider.limit() - 1, divider.limit(), divider.limit() + 1})

@@ -22,21 +22,23 @@
 #include <string>
 
 #include "stratum/patterns/strata.hpp"
+#include "stratum/util/fast_divider.hpp"
 
 namespace stratum {
 
-/// Kensler's (2013) hash-based permutation of {0, …, l-1} (his Listing 3):
-/// a bijective hash on the next power of two, cycle-walking until the value
-/// falls below l, then a rotation by p. p selects the permutation. The final
-/// rotation (i + p) mod l is computed in 64 bits: the memo's 32-bit sum wraps
-/// for large p and can then map two indices to one value.
-constexpr std::uint32_t kensler_permute(std::uint32_t i, std::uint32_t l, std::uint32_t p) noexcept {
+namespace multi_jittered_detail {
+/// The all-ones mask of l − 1's bits (the power of two the walk hashes on).
+constexpr std::uint32_t walk_mask(std::uint32_t l) noexcept {
   std::uint32_t w = l - 1;
   w |= w >> 1;
   w |= w >> 2;
   w |= w >> 4;
   w |= w >> 8;
   w |= w >> 16;
+  return w;
+}
+/// Kensler's bijective hash on [0, w] walked until the value falls below l.
+constexpr std::uint32_t kensler_walk(std::uint32_t i, std::uint32_t l, std::uint32_t w, std::uint32_t p) noexcept {
   do {
     i ^= p;
     i *= 0xe170893du;
@@ -57,8 +59,41 @@ constexpr std::uint32_t kensler_permute(std::uint32_t i, std::uint32_t l, std::u
     i &= w;
     i ^= i >> 5;
   } while (i >= l);
-  return static_cast<std::uint32_t>((static_cast<std::uint64_t>(i) + p) % l);
+  return i;
 }
+}  // namespace multi_jittered_detail
+
+/// Kensler's (2013) hash-based permutation of {0, …, l-1} (his Listing 3):
+/// a bijective hash on the next power of two, cycle-walking until the value
+/// falls below l, then a rotation by p. p selects the permutation. The final
+/// rotation (i + p) mod l is computed in 64 bits: the memo's 32-bit sum wraps
+/// for large p and can then map two indices to one value.
+constexpr std::uint32_t kensler_permute(std::uint32_t i, std::uint32_t l, std::uint32_t p) noexcept {
+  const std::uint32_t walked = multi_jittered_detail::kensler_walk(i, l, multi_jittered_detail::walk_mask(l), p);
+  return static_cast<std::uint32_t>((static_cast<std::uint64_t>(walked) + p) % l);
+}
+
+/// kensler_permute over one domain l prepared once: the walk's mask, and
+/// p mod l by a FastDivider, so a permutation takes no hardware division
+/// (a sample draws three). Equal to kensler_permute(i, l, p) (tested).
+class KenslerDomain {
+ public:
+  constexpr KenslerDomain() noexcept = default;
+  explicit constexpr KenslerDomain(std::uint32_t l) noexcept
+      : l_(l), mask_(multi_jittered_detail::walk_mask(l)), divider_(l >= 2 ? l : 2) {}
+  constexpr std::uint32_t size() const noexcept { return l_; }
+  constexpr std::uint32_t permute(std::uint32_t i, std::uint32_t p) const noexcept {
+    if (l_ == 1) return 0;
+    const std::uint64_t walked = multi_jittered_detail::kensler_walk(i, l_, mask_, p);
+    const std::uint64_t rotated = walked + (p - divider_.quotient(p) * l_);  // walked + (p mod l) < 2l
+    return static_cast<std::uint32_t>(rotated >= l_ ? rotated - l_ : rotated);
+  }
+
+ private:
+  std::uint32_t l_ = 1;
+  std::uint32_t mask_ = 0;
+  FastDivider divider_{};
+};
 
 /// Kensler's (2013) hash of (i, p) to 32 bits (his randfloat before scaling).
 constexpr std::uint32_t kensler_hash(std::uint32_t i, std::uint32_t p) noexcept {
@@ -160,7 +195,7 @@ class CorrelatedMultiJittered {
   /// n points (1 ≤ n < 2^32), aspect ratio a = columns / rows > 0. The
   /// 64-bit seed is hashed to Kensler's 32-bit pattern number p.
   CorrelatedMultiJittered(std::uint64_t count, std::uint64_t seed, double aspect = 1.0)
-      : count_(count), pattern_(static_cast<std::uint32_t>(hash64(seed, 0x434d4aULL) >> 32)) {
+      : count_(count), pattern_(pattern_of(seed)) {
     require(count >= 1 && count <= 0xffffffffULL, "n", count,
             "correlated multi-jittered takes 1 <= n <= 2^32 - 1 (32-bit hash permutations)");
     require(std::isfinite(aspect) && aspect > 0, "aspect", aspect, "must be a positive number");
@@ -170,6 +205,15 @@ class CorrelatedMultiJittered {
                           : static_cast<std::uint64_t>(std::floor(std::sqrt(static_cast<double>(count) * aspect)));
     columns_ = std::clamp<std::uint64_t>(m, 1, count);
     rows_ = (count + columns_ - 1) / columns_;
+    all_ = KenslerDomain(static_cast<std::uint32_t>(count_));
+    across_ = KenslerDomain(static_cast<std::uint32_t>(columns_));
+    down_ = KenslerDomain(static_cast<std::uint32_t>(rows_));
+    column_divider_ = FastDivider(columns_ >= 2 ? columns_ : 2);
+  }
+
+  /// Kensler's p of a seed (the constructor's pattern()).
+  static std::uint32_t pattern_of(std::uint64_t seed) noexcept {
+    return static_cast<std::uint32_t>(hash64(seed, 0x434d4aULL) >> 32);
   }
 
   std::uint64_t count() const noexcept { return count_; }
@@ -183,27 +227,45 @@ class CorrelatedMultiJittered {
 
   template <class Real = double>
   Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    const auto n = static_cast<std::uint32_t>(count_);
-    const auto m = static_cast<std::uint32_t>(columns_);
-    const auto k = static_cast<std::uint32_t>(rows_);
-    const std::uint32_t p = pattern_;
-    const std::uint32_t s = kensler_permute(static_cast<std::uint32_t>(index), n, p * 0x51633e2du);
-    if (dim == 0) {
-      const std::uint64_t sx = kensler_permute(s % m, m, p * 0x68bc21ebu);
-      const std::uint64_t sy = kensler_permute(s / m, k, p * 0x02e5be93u);
-      const double jx = kensler_hash(s, p * 0x967a889bu) * 0x1.0p-32;
-      // (sx + (sy + jx) / k) / m = (sx·k + sy + jx) / (m·k)
-      return cell_coordinate<Real>(sx * k + sy, jx, columns_ * rows_);
-    }
+    const std::uint32_t s = shuffled(pattern_, index);
+    return dim == 0 ? x_of<Real>(pattern_, s) : y_of<Real>(pattern_, s);
+  }
+  /// Coordinates 0 … coordinates − 1 (at most 2) of point `index` of the
+  /// set whose pattern is p (pattern_of(seed): the same count, aspect and
+  /// seed give sample's points), the shuffled index shared by both.
+  template <class Real = double>
+  void sample_for(std::uint32_t p, std::uint64_t index, unsigned coordinates, Real* out) const noexcept {
+    const std::uint32_t s = shuffled(p, index);
+    out[0] = x_of<Real>(p, s);
+    if (coordinates >= 2) out[1] = y_of<Real>(p, s);
+  }
+
+ private:
+  /// Kensler's shuffled sample index s.
+  std::uint32_t shuffled(std::uint32_t p, std::uint64_t index) const noexcept {
+    return all_.permute(static_cast<std::uint32_t>(index), p * 0x51633e2du);
+  }
+  template <class Real>
+  Real x_of(std::uint32_t p, std::uint32_t s) const noexcept {
+    const std::uint64_t row = columns_ >= 2 ? column_divider_.quotient(s) : s;  // s / m
+    const std::uint64_t sx = across_.permute(static_cast<std::uint32_t>(s - row * columns_), p * 0x68bc21ebu);
+    const std::uint64_t sy = down_.permute(static_cast<std::uint32_t>(row), p * 0x02e5be93u);
+    const double jx = kensler_hash(s, p * 0x967a889bu) * 0x1.0p-32;
+    // (sx + (sy + jx) / k) / m = (sx·k + sy + jx) / (m·k)
+    return cell_coordinate<Real>(sx * rows_ + sy, jx, columns_ * rows_);
+  }
+  template <class Real>
+  Real y_of(std::uint32_t p, std::uint32_t s) const noexcept {
     const double jy = kensler_hash(s, p * 0x368cc8b7u) * 0x1.0p-32;
     return cell_coordinate<Real>(s, jy, count_);
   }
 
- private:
   std::uint64_t count_;
   std::uint32_t pattern_;
   std::uint64_t columns_ = 1;
   std::uint64_t rows_ = 1;
+  KenslerDomain all_, across_, down_;  ///< the permutations over n, m and k
+  FastDivider column_divider_;         ///< s / m (m ≥ 2)
 };
 
 }  // namespace stratum

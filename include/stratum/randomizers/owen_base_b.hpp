@@ -65,7 +65,7 @@ class BaseBOwenScrambler {
     for (const std::uint32_t base : bases) {
       const unsigned positions = digits_detail::digit_count(base), per_word = word_digits(base);
       const unsigned words = (positions + per_word - 1) / per_word;
-      dims_.push_back({base, positions, per_word, words, key_count, digits_detail::FastDivider(base), is_prime(base),
+      dims_.push_back({base, positions, per_word, words, key_count, FastDivider(base), is_prime(base),
                        base == 2 ? nullptr : digits_detail::shared_digit_weights(base),
                        base == 2 ? 0 : power_of(base, per_word)});
       key_count += 1 + words + 1;  // τ's key, the prefix words' keys, the word of prefix 0
@@ -128,7 +128,7 @@ class BaseBOwenScrambler {
     unsigned word_digits;   // D(b): shifts read from one prefix word
     unsigned prefix_words;  // ⌈K(b) / D(b)⌉: words of one prefix
     std::size_t first_key;
-    digits_detail::FastDivider divider;
+    FastDivider divider;
     bool prime;
     const digits_detail::u128* weights;  // the base's W_j (b > 2), shared for the process
     std::uint64_t word_power;            // b^D (b > 2)

@@ -42,7 +42,7 @@ class Faure {
             "Faure supports 1 to " + std::to_string(max_dimensions) + " dimensions");
     base_ = base_for(dimensions);
     reciprocal_ = radical_inverse_reciprocal(base_);
-    divider_ = digits_detail::FastDivider(base_);
+    divider_ = FastDivider(base_);
     index_digits_ = 0;
     for (unsigned __int128 power = 1; power < (static_cast<unsigned __int128>(1) << 64); power *= base_)
       ++index_digits_;
@@ -149,7 +149,7 @@ class Faure {
   unsigned dimensions_;
   std::uint32_t base_ = 2;
   std::uint64_t reciprocal_ = 0;
-  digits_detail::FastDivider divider_;
+  FastDivider divider_;
   unsigned index_digits_ = 0;
   unsigned output_digits_ = 0;
   std::vector<std::uint32_t> matrices_;    // dimensions × R × K, row-major per dimension
