@@ -227,26 +227,39 @@ class LatinSquareSeeded final : public SeededGenerator {
 };
 
 /// cmj as a SeededGenerator: the construction (its domains and dividers)
-/// built once, a seed's state Kensler's pattern p alone; a point's shuffled
-/// index serves both coordinates. The points of its generator (tested).
+/// built once, a seed's state what a point needs of Kensler's pattern p
+/// (CorrelatedMultiJittered::Keys: eight 32-bit words, two per state word);
+/// a point's shuffled index serves both coordinates. The points of its
+/// generator (tested).
 class CmjSeeded final : public SeededGenerator {
+  using Keys = CorrelatedMultiJittered::Keys;
+
  public:
   explicit CmjSeeded(const CorrelatedMultiJittered& shape) : shape_(shape) {}
-  std::size_t state_words() const noexcept override { return 1; }
+  std::size_t state_words() const noexcept override { return 4; }
   void seed(std::uint64_t seed, unsigned, std::uint64_t* state) const noexcept override {
-    state[0] = CorrelatedMultiJittered::pattern_of(seed);
+    const Keys k = shape_.keys(CorrelatedMultiJittered::pattern_of(seed));
+    const auto pair = [](std::uint32_t low, std::uint32_t high) { return low | std::uint64_t{high} << 32; };
+    state[0] = pair(k.shuffle, k.across), state[1] = pair(k.down, k.jitter_x);
+    state[2] = pair(k.jitter_y, k.shuffle_rotation), state[3] = pair(k.across_rotation, k.down_rotation);
   }
   void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
              double* out) const noexcept override {
-    shape_.sample_for(static_cast<std::uint32_t>(state[0]), index, coordinates, out);
+    shape_.sample_for(keys_of(state), index, coordinates, out);
   }
   void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
               double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
-    for (std::uint64_t k = 0; k < count; ++k)
-      shape_.sample_for(static_cast<std::uint32_t>(state[0]), first + k, coordinates, out + k * coordinates);
+    const Keys k = keys_of(state);
+    for (std::uint64_t i = 0; i < count; ++i) shape_.sample_for(k, first + i, coordinates, out + i * coordinates);
   }
 
  private:
+  static Keys keys_of(const std::uint64_t* state) noexcept {
+    const auto low = [](std::uint64_t word) { return static_cast<std::uint32_t>(word); };
+    const auto high = [](std::uint64_t word) { return static_cast<std::uint32_t>(word >> 32); };
+    return {low(state[0]), high(state[0]), low(state[1]), high(state[1]),
+            low(state[2]), high(state[2]), low(state[3]), high(state[3])};
+  }
   CorrelatedMultiJittered shape_;  ///< n, aspect (its own pattern unused)
 };
 

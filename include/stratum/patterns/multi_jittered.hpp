@@ -83,10 +83,16 @@ class KenslerDomain {
       : l_(l), mask_(multi_jittered_detail::walk_mask(l)), divider_(l >= 2 ? l : 2) {}
   constexpr std::uint32_t size() const noexcept { return l_; }
   constexpr std::uint32_t permute(std::uint32_t i, std::uint32_t p) const noexcept {
+    return permute(i, p, rotation(p));
+  }
+  /// p mod l, the final rotation of permutation p (once per p: permute's third argument).
+  constexpr std::uint32_t rotation(std::uint32_t p) const noexcept {
+    return static_cast<std::uint32_t>(p - divider_.quotient(p) * l_);
+  }
+  constexpr std::uint32_t permute(std::uint32_t i, std::uint32_t p, std::uint32_t rotation) const noexcept {
     if (l_ == 1) return 0;
-    const std::uint64_t walked = multi_jittered_detail::kensler_walk(i, l_, mask_, p);
-    const std::uint64_t rotated = walked + (p - divider_.quotient(p) * l_);  // walked + (p mod l) < 2l
-    return static_cast<std::uint32_t>(rotated >= l_ ? rotated - l_ : rotated);
+    const std::uint64_t rotated = std::uint64_t{multi_jittered_detail::kensler_walk(i, l_, mask_, p)} + rotation;
+    return static_cast<std::uint32_t>(rotated >= l_ ? rotated - l_ : rotated);  // walked + (p mod l) < 2l
   }
 
  private:
@@ -225,38 +231,59 @@ class CorrelatedMultiJittered {
   /// columns × rows cells as well as Latin in y.
   bool complete() const noexcept { return columns_ * rows_ == count_; }
 
+  /// What a point of pattern p needs of p: the five derived patterns of
+  /// Kensler's listing and the three permutations' rotations, derived once
+  /// per pattern (keys(p)), not per point.
+  struct Keys {
+    std::uint32_t shuffle, across, down, jitter_x, jitter_y;
+    std::uint32_t shuffle_rotation, across_rotation, down_rotation;
+  };
+  Keys keys(std::uint32_t p) const noexcept {
+    const std::uint32_t shuffle = p * 0x51633e2du, across = p * 0x68bc21ebu, down = p * 0x02e5be93u;
+    return {shuffle,
+            across,
+            down,
+            p * 0x967a889bu,
+            p * 0x368cc8b7u,
+            all_.rotation(shuffle),
+            across_.rotation(across),
+            down_.rotation(down)};
+  }
+
   template <class Real = double>
   Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    const std::uint32_t s = shuffled(pattern_, index);
-    return dim == 0 ? x_of<Real>(pattern_, s) : y_of<Real>(pattern_, s);
+    const Keys k = keys(pattern_);
+    const std::uint32_t s = shuffled(k, index);
+    return dim == 0 ? x_of<Real>(k, s) : y_of<Real>(k, s);
   }
   /// Coordinates 0 … coordinates − 1 (at most 2) of point `index` of the
-  /// set whose pattern is p (pattern_of(seed): the same count, aspect and
-  /// seed give sample's points), the shuffled index shared by both.
+  /// set of pattern p, from keys(p) (pattern_of(seed): the same count,
+  /// aspect and seed give sample's points), the shuffled index shared by both.
   template <class Real = double>
-  void sample_for(std::uint32_t p, std::uint64_t index, unsigned coordinates, Real* out) const noexcept {
-    const std::uint32_t s = shuffled(p, index);
-    out[0] = x_of<Real>(p, s);
-    if (coordinates >= 2) out[1] = y_of<Real>(p, s);
+  void sample_for(const Keys& keys, std::uint64_t index, unsigned coordinates, Real* out) const noexcept {
+    const std::uint32_t s = shuffled(keys, index);
+    out[0] = x_of<Real>(keys, s);
+    if (coordinates >= 2) out[1] = y_of<Real>(keys, s);
   }
 
  private:
   /// Kensler's shuffled sample index s.
-  std::uint32_t shuffled(std::uint32_t p, std::uint64_t index) const noexcept {
-    return all_.permute(static_cast<std::uint32_t>(index), p * 0x51633e2du);
+  std::uint32_t shuffled(const Keys& k, std::uint64_t index) const noexcept {
+    return all_.permute(static_cast<std::uint32_t>(index), k.shuffle, k.shuffle_rotation);
   }
   template <class Real>
-  Real x_of(std::uint32_t p, std::uint32_t s) const noexcept {
+  Real x_of(const Keys& k, std::uint32_t s) const noexcept {
     const std::uint64_t row = columns_ >= 2 ? column_divider_.quotient(s) : s;  // s / m
-    const std::uint64_t sx = across_.permute(static_cast<std::uint32_t>(s - row * columns_), p * 0x68bc21ebu);
-    const std::uint64_t sy = down_.permute(static_cast<std::uint32_t>(row), p * 0x02e5be93u);
-    const double jx = kensler_hash(s, p * 0x967a889bu) * 0x1.0p-32;
+    const std::uint64_t sx =
+        across_.permute(static_cast<std::uint32_t>(s - row * columns_), k.across, k.across_rotation);
+    const std::uint64_t sy = down_.permute(static_cast<std::uint32_t>(row), k.down, k.down_rotation);
+    const double jx = kensler_hash(s, k.jitter_x) * 0x1.0p-32;
     // (sx + (sy + jx) / k) / m = (sx·k + sy + jx) / (m·k)
     return cell_coordinate<Real>(sx * rows_ + sy, jx, columns_ * rows_);
   }
   template <class Real>
-  Real y_of(std::uint32_t p, std::uint32_t s) const noexcept {
-    const double jy = kensler_hash(s, p * 0x368cc8b7u) * 0x1.0p-32;
+  Real y_of(const Keys& k, std::uint32_t s) const noexcept {
+    const double jy = kensler_hash(s, k.jitter_y) * 0x1.0p-32;
     return cell_coordinate<Real>(s, jy, count_);
   }
 
