@@ -238,7 +238,8 @@ PointGenerator GeneratorBinder::bind(std::uint64_t seed, std::uint64_t start) {
 SetBinder::SetBinder(std::string_view name, const SamplerRequest& request) : sampler_(&find_sampler(name)) {
   require(request.n.has_value(), "n", "(none)", "a set binder needs the set's n");
   request_ = resolved_request(*sampler_, request);
-  if (!sampler_->bind && sampler_->seeded) seeded_ = sampler_->seeded(request_);
+  // A whole set's state is its points 0 … n − 1: a request from another start reads sets (none such today).
+  if (!sampler_->bind && sampler_->seeded && request_.start == 0) seeded_ = sampler_->seeded(request_);
 }
 
 PointSet SetBinder::generate(std::uint64_t seed) {

@@ -196,8 +196,10 @@ class MultiJitteredSeeded final : public SeededGenerator {
 
 /// A Latin square as a SeededGenerator: a seed's state is the jitter
 /// chain's shared link (word 0) and, where the symbol coordinate is asked,
-/// the square's symbols (words 1 … n). Rows and columns need no square, so
-/// the renderer's 2D sets (the first two coordinates) cost no chain at all.
+/// the square's symbols (words 1 … n; made with the chain's scratch, the
+/// one allocation of a seed, and only there). Rows and columns need no
+/// square, so the renderer's 2D sets (the first two coordinates) run no
+/// Jacobson–Matthews chain.
 /// The points of the entry's generate (tested).
 class LatinSquareSeeded final : public SeededGenerator {
  public:

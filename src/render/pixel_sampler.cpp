@@ -71,7 +71,8 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   has_spacetime_ = !spacetime_.empty();
   tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
   if (info.bind && !keyed_ && !tables_) set_binder_.emplace(name, set_request(seed_, settings_.spp, offset_));
-  if (!info.bind && !keyed_ && !tables_) set_maker_.emplace(name, set_request(seed_, settings_.spp, offset_));
+  if (!info.bind && !keyed_ && !tables_ && !info.zsobol_image && !info.ranked_image)
+    set_maker_.emplace(name, set_request(seed_, settings_.spp, offset_));
   pixel_seeded_ = set_binder_ ? set_binder_->seeded() : set_maker_ ? set_maker_->seeded() : nullptr;
   spp_root_ = integer_root(settings_.spp, 2);
   if (info.zsobol_image) zsobol_.emplace(info.zsobol_image(std::max(1u, settings_.resolution), settings_.spp, seed_));

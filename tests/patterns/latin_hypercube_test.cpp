@@ -88,6 +88,21 @@ TEST(LatinHypercube, UnbiasedOverSeeds) {
   }
 }
 
+// The row keys' chain (jitter_key, row_key_of) gives coordinate()'s
+// uniform01(hash64(seed, tag), index, dim) jitter.
+TEST(LatinHypercube, RowKeysGiveTheCoordinatesJitter) {
+  for (const bool centered : {false, true})
+    for (const std::uint64_t seed : {0ull, 4ull, 0xfeedfacecafebeefull}) {
+      const LatinHypercube lhs(37, 3, seed, centered);
+      for (std::uint64_t index = 0; index < 37; ++index) {
+        EXPECT_EQ(lhs.row_key(index), LatinHypercube::row_key_of(lhs.jitter_key(), index));
+        for (unsigned dim = 0; dim < 3; ++dim)
+          ASSERT_EQ(lhs.coordinate_in_row(index % 37, lhs.row_key(index), dim), lhs.coordinate(index % 37, index, dim))
+              << seed << " " << index << " " << dim;
+      }
+    }
+}
+
 TEST(LatinHypercube, RejectsBadArguments) {
   EXPECT_THROW(LatinHypercube(0, 2, 0), invalid_argument);
   EXPECT_THROW(LatinHypercube(4, 0, 0), invalid_argument);

@@ -100,6 +100,24 @@ TEST(LatinSquare, EveryTwoDimensionalProjectionIsAJitteredGrid) {
   }
 }
 
+// coordinate() as written out: row, column or symbol, jittered by
+// uniform01(hash64(seed, tag), index, dim) (the chained jitter key gives it).
+TEST(LatinSquare, CoordinatesEqualTheJitteredCellsWrittenOut) {
+  for (const std::uint64_t m : {1ull, 2ull, 5ull, 12ull})
+    for (const std::uint64_t seed : {0ull, 4ull, 0xfeedfacecafebeefull}) {
+      const LatinSquare square(m, seed);
+      const std::vector<std::uint32_t> symbols = square_of(square);
+      for (std::uint64_t index = 0; index < m * m; ++index)
+        for (unsigned dim = 0; dim < 3; ++dim) {
+          const std::uint64_t cell = dim == 0 ? index / m : dim == 1 ? index % m : symbols[index];
+          const double expected =
+              cell_coordinate(cell, uniform01<double>(hash64(seed, 0x4c534a4954ULL), index, dim), m);
+          ASSERT_EQ(square.coordinate(index, dim, symbols[index]), expected) << m << " " << index << " " << dim;
+          ASSERT_EQ(square.coordinate_from(square.jitter_key(), index, dim, symbols[index]), expected);
+        }
+    }
+}
+
 TEST(LatinSquare, RejectsBadOrders) {
   EXPECT_THROW(LatinSquare(0, 0), invalid_argument);
   EXPECT_THROW(LatinSquare(70000, 0), invalid_argument);

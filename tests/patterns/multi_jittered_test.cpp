@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "unbiased.hpp"
@@ -58,6 +60,32 @@ TEST(MultiJittered, LatinAndStratifiedForManyShapes) {
            {1, 1}, {1, 7}, {4, 4}, {4, 8}, {8, 4}, {3, 5}, {16, 16}, {31, 33}})
     for (std::uint64_t seed : {0ull, 5ull})
       expect_multi_jittered(points_of(MultiJittered(m, k, seed)), m, k, std::to_string(m) + "x" + std::to_string(k));
+}
+
+// The construction as Chiu, Shirley and Wang describe it, written out from
+// the generator's primitives (shuffles keyed by (seed, column) and (seed,
+// row), jitter uniform01(hash64(seed, tag), index, dim)): the chained keys
+// and the cells visitors that generate now goes through give these points.
+TEST(MultiJittered, EqualsTheConstructionWrittenOut) {
+  for (const auto& [m, k] : {std::pair{2ull, 2ull}, {3ull, 5ull}, {1ull, 7ull}, {6ull, 4ull}})
+    for (const std::uint64_t seed : {0ull, 9ull, 0xfeedfacecafebeefull}) {
+      const std::uint64_t n = m * k;
+      std::vector<double> expected(2 * n);
+      std::vector<std::uint64_t> perm(std::max(m, k));
+      for (std::uint64_t i = 0; i < m; ++i) {
+        random_permutation(perm.data(), k, hash64(seed, 0x4d4a58ULL, i));
+        for (std::uint64_t j = 0; j < k; ++j)
+          expected[2 * (j * m + i)] =
+              cell_coordinate(i * k + perm[j], uniform01<double>(hash64(seed, 0x4d4a4a4954ULL), j * m + i, 0), n);
+      }
+      for (std::uint64_t j = 0; j < k; ++j) {
+        random_permutation(perm.data(), m, hash64(seed, 0x4d4a59ULL, j));
+        for (std::uint64_t i = 0; i < m; ++i)
+          expected[2 * (j * m + i) + 1] =
+              cell_coordinate(j * m + perm[i], uniform01<double>(hash64(seed, 0x4d4a4a4954ULL), j * m + i, 1), n);
+      }
+      EXPECT_EQ(points_of(MultiJittered(m, k, seed)), expected) << m << "x" << k << " seed " << seed;
+    }
 }
 
 TEST(MultiJittered, ClosestToSquareFactorization) {

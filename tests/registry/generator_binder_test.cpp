@@ -80,8 +80,8 @@ TEST(GeneratorBinder, ValidatesOnceAtConstructionWithTheRegistrysMessages) {
 
 TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
   // Where a sampler has a SeededGenerator (base-b owen; the constructions
-  // that do not depend on the seed, under none and cp; cmj's, copied by
-  // value), a seed's state written in place gives bind's points, for the
+  // that do not depend on the seed, under none and cp; cmj's, the keys of
+  // Kensler's pattern), a seed's state written in place gives bind's points, for the
   // leading coordinates asked and for all of them; other randomizers have
   // none (bind stays the path).
   std::set<std::string> seeded;
@@ -201,7 +201,9 @@ TEST(SetBinder, SeededPatternsDrawWhatGenerateDraws) {
         std::fill(state.begin(), state.end(), 0);  // nothing left from the last seed
         generator.seed(seed, coordinates, state.data());
         std::vector<double> all(c.n * coordinates), point(coordinates);
-        generator.points(state.data(), 0, c.n, coordinates, all.data());
+        const std::uint64_t half = c.n / 2;  // two calls: points from a first index other than 0 too
+        generator.points(state.data(), 0, half, coordinates, all.data());
+        generator.points(state.data(), half, c.n - half, coordinates, all.data() + half * coordinates);
         for (std::uint64_t i = 0; i < c.n; ++i) {
           generator.point(state.data(), i, coordinates, point.data());
           for (unsigned j = 0; j < coordinates; ++j) {

@@ -87,7 +87,7 @@ class KenslerDomain {
   }
   /// p mod l, the final rotation of permutation p (once per p: permute's third argument).
   constexpr std::uint32_t rotation(std::uint32_t p) const noexcept {
-    return static_cast<std::uint32_t>(p - divider_.quotient(p) * l_);
+    return l_ < 2 ? 0 : static_cast<std::uint32_t>(p - divider_.quotient(p) * l_);
   }
   constexpr std::uint32_t permute(std::uint32_t i, std::uint32_t p, std::uint32_t rotation) const noexcept {
     if (l_ == 1) return 0;
@@ -261,6 +261,7 @@ class CorrelatedMultiJittered {
   /// aspect and seed give sample's points), the shuffled index shared by both.
   template <class Real = double>
   void sample_for(const Keys& keys, std::uint64_t index, unsigned coordinates, Real* out) const noexcept {
+    if (coordinates == 0) return;
     const std::uint32_t s = shuffled(keys, index);
     out[0] = x_of<Real>(keys, s);
     if (coordinates >= 2) out[1] = y_of<Real>(keys, s);

@@ -143,9 +143,11 @@ class PointGenerator {
 /// cost more than its few points (a renderer's set per pixel and
 /// dimension): what does not depend on the seed is built once, a seed's
 /// state is `state_words()` 64-bit words that `seed` writes into the
-/// caller's storage (no allocation), and `point` reads a point from it. Its
-/// points equal those of the request's PointGenerator bound to that seed
-/// (tested), which remains the general path.
+/// caller's storage (no allocation, but for latin-square's symbol
+/// coordinate: its square's scratch), and `point` reads a point from it. Its
+/// points equal those of the request's PointGenerator bound to that seed, or
+/// for a pattern made as a whole set its generate's (tested), which remain
+/// the general paths.
 class SeededGenerator {
  public:
   virtual ~SeededGenerator() = default;

@@ -51,8 +51,8 @@ class SetBinder {
   std::uint64_t count() const noexcept { return *request_.n; }
   unsigned dimensions() const noexcept { return request_.d; }
   /// Where a sampler made as a whole set (no SamplerInfo::bind) has a
-  /// SeededGenerator (SamplerInfo::seeded), the request's, built with the
-  /// binder, else nullptr: generate's points for any seed, written into the
+  /// SeededGenerator (SamplerInfo::seeded) and the request starts at 0, the
+  /// request's, built with the binder, else nullptr: generate's points for any seed, written into the
   /// caller's state without a set's allocation.
   const std::shared_ptr<const SeededGenerator>& seeded() const noexcept { return seeded_; }
 

@@ -55,11 +55,13 @@
 /// (bit-identical to RandomDigitPermutations; spp and array
 /// counts ≤ 2187, above which it builds RandomDigitPermutations). Where the
 /// registry gives a SeededGenerator (SamplerInfo::seeded: faure and halton
-/// under owen, the lattices, hammersley…), a set's seed is a few words written in place per pixel and
-/// dimension and its points are read from them; other samplers with a
-/// generator bind one per pixel and dimension, and those made as a whole
-/// set generate each set once per pixel and dimension through a SetBinder
-/// (the request validated once) and cache it.
+/// under owen, the lattices, hammersley…, and patterns made as a whole set
+/// whose state is their construction: n-rooks, multi-jittered,
+/// latin-square), a set's seed is a few words written in place per pixel
+/// and dimension and its points are read from them; other samplers with a
+/// generator bind one per pixel and dimension, and the other whole-set
+/// patterns generate each set once per pixel and dimension through a
+/// SetBinder (the request validated once) and cache it.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -175,7 +177,7 @@ class PixelSampler {
   std::vector<PointGenerator> generators_;  ///< this pixel's, by dimension (empty: not bound yet)
   const PointGenerator& generator_for(std::uint32_t dimension);
   /// Where the binder's sampler has a SeededGenerator (SamplerInfo::seeded:
-  /// base-b owen), no generator is bound: per dimension (and per continued
+  /// base-b owen, …; pixel_seeded_), no generator is bound: per dimension (and per continued
   /// array dimension) the state of the set's seed, written in place when the
   /// pixel changes (a few hashes, no allocation) and read per point.
   struct SeededState {
