@@ -129,12 +129,24 @@ static PointSet generate_latin_hypercube(const SamplerRequest& request) {
   return points;
 }
 
+/// A SeededGenerator whose points() calls Derived::point directly, its
+/// body inlined in the loop: a shadow-ray array in one call.
+template <class Derived>
+class InlinePoints : public SeededGenerator {
+ public:
+  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
+              double* out) const noexcept final {
+    const Derived& self = static_cast<const Derived&>(*this);
+    for (std::uint64_t k = 0; k < count; ++k) self.Derived::point(state, first + k, coordinates, out + k * coordinates);
+  }
+};
+
 /// N-rooks as a SeededGenerator: a seed's state is its permutations, one
 /// word per cell (coordinate j's n cells from word 1 + j·n), after the
 /// jitter chain's shared link (word 0), so a set's points need no
 /// allocation: the renderer's sets of a few points per pixel and dimension.
 /// The points of generate_latin_hypercube (tested).
-class LatinHypercubeSeeded final : public SeededGenerator {
+class LatinHypercubeSeeded final : public InlinePoints<LatinHypercubeSeeded> {
  public:
   explicit LatinHypercubeSeeded(const SamplerRequest& request)
       : shape_(*request.n, request.d, 0, request.values.flag("centered")) {}
@@ -150,11 +162,6 @@ class LatinHypercubeSeeded final : public SeededGenerator {
     for (unsigned j = 0; j < coordinates; ++j)
       out[j] = shape_.coordinate_in_row(state[1 + j * shape_.count() + index], row, j);
   }
-  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
-              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
-    for (std::uint64_t k = 0; k < count; ++k)
-      LatinHypercubeSeeded::point(state, first + k, coordinates, out + k * coordinates);
-  }
 
  private:
   LatinHypercube shape_;  ///< n, d and centered (its seed unused: coordinate_in_row reads none)
@@ -164,7 +171,7 @@ class LatinHypercubeSeeded final : public SeededGenerator {
 /// column (words 1 … n) and fine row (words n + 1 … 2n) after the jitter
 /// chain's shared link (word 0), the shuffles' scratch last; the points of
 /// the entry's generate (tested), without a set's allocation.
-class MultiJitteredSeeded final : public SeededGenerator {
+class MultiJitteredSeeded final : public InlinePoints<MultiJitteredSeeded> {
  public:
   explicit MultiJitteredSeeded(const MultiJittered& shape) : shape_(shape) {}
   std::size_t state_words() const noexcept override { return 1 + 2 * shape_.count() + shape_.scratch_size(); }
@@ -184,11 +191,6 @@ class MultiJitteredSeeded final : public SeededGenerator {
     for (unsigned j = 0; j < coordinates; ++j)
       out[j] = shape_.coordinate(state[1 + j * shape_.count() + index], state[0], index, j);
   }
-  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
-              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
-    for (std::uint64_t k = 0; k < count; ++k)
-      MultiJitteredSeeded::point(state, first + k, coordinates, out + k * coordinates);
-  }
 
  private:
   MultiJittered shape_;  ///< columns and rows (its seed unused: coordinate reads none)
@@ -201,7 +203,7 @@ class MultiJitteredSeeded final : public SeededGenerator {
 /// square, so the renderer's 2D sets (the first two coordinates) run no
 /// Jacobson–Matthews chain.
 /// The points of the entry's generate (tested).
-class LatinSquareSeeded final : public SeededGenerator {
+class LatinSquareSeeded final : public InlinePoints<LatinSquareSeeded> {
  public:
   explicit LatinSquareSeeded(const LatinSquare& shape) : shape_(shape) {}
   std::size_t state_words() const noexcept override { return 1 + shape_.count(); }
@@ -217,11 +219,6 @@ class LatinSquareSeeded final : public SeededGenerator {
              double* out) const noexcept override {
     for (unsigned j = 0; j < coordinates; ++j)
       out[j] = shape_.coordinate_from(state[0], index, j, j == 2 ? static_cast<std::uint32_t>(state[1 + index]) : 0);
-  }
-  void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
-              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
-    for (std::uint64_t k = 0; k < count; ++k)
-      LatinSquareSeeded::point(state, first + k, coordinates, out + k * coordinates);
   }
 
  private:

@@ -39,6 +39,22 @@ std::vector<std::pair<const SamplerInfo*, SamplerRequest>> bindable_requests() {
   }
   return requests;
 }
+/// A request in the sampler's smallest dimension (at least 2) for 16 points,
+/// or 64 where it does not take 16 (n left empty where it takes neither).
+SamplerRequest request_taking_16_or_64(const SamplerInfo& info) {
+  SamplerRequest request;
+  request.d = std::max(2u, info.min_dim);
+  for (const std::uint64_t n : {16ull, 64ull}) {
+    request.n = n;
+    try {
+      validate_request(info, request);
+      return request;
+    } catch (const invalid_argument&) {
+      request.n.reset();
+    }
+  }
+  return request;
+}
 }  // namespace
 
 TEST(GeneratorBinder, BindsWhatBindGeneratorBindsForEverySeedAndStart) {
@@ -124,17 +140,7 @@ TEST(SetBinder, GeneratesWhatGeneratePointsGeneratesForEverySeed) {
   int compared = 0;
   for (const SamplerInfo& info : samplers()) {
     const unsigned d = std::max(2u, info.min_dim);
-    SamplerRequest request;
-    request.d = d;
-    for (const std::uint64_t n : {16ull, 64ull}) {
-      request.n = n;
-      try {
-        validate_request(info, request);
-        break;
-      } catch (const invalid_argument&) {
-        request.n.reset();
-      }
-    }
+    SamplerRequest request = request_taking_16_or_64(info);
     ASSERT_TRUE(request.n.has_value()) << info.name << " takes none of the counts tried";
     for (const std::string& randomize : info.randomizers) {
       request.randomize = randomize;
@@ -218,17 +224,7 @@ TEST(SetBinder, SeededPatternsDrawWhatGenerateDraws) {
   std::set<std::string> seeded;
   for (const SamplerInfo& info : samplers()) {
     if (info.bind) continue;
-    SamplerRequest request;
-    request.d = std::max(2u, info.min_dim);
-    for (const std::uint64_t n : {16ull, 64ull}) {
-      request.n = n;
-      try {
-        validate_request(info, request);
-        break;
-      } catch (const invalid_argument&) {
-        request.n.reset();
-      }
-    }
+    SamplerRequest request = request_taking_16_or_64(info);
     ASSERT_TRUE(request.n.has_value()) << info.name;
     for (const std::string& randomize : info.randomizers) {
       request.randomize = randomize;

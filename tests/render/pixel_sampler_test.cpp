@@ -108,44 +108,6 @@ TEST(PixelSampler, BadSettingsAreNamed) {
   EXPECT_NE(message(settings("random", 36, "magic-square")).find("spp = 36"), std::string::npos);  // m = 6
 }
 
-TEST(PixelSampler, WholeSetPatternsSeededInPlaceEqualTheRegistrys) {
-  // n-rooks, multi-jittered and latin-square (made as a whole set, their
-  // construction written in place per pixel and dimension) and cmj: the
-  // film set (dimension 0: get_1d seeds its first coordinate, a later get_2d
-  // of the same pixel both) and each sample's own 4-point shadow-ray array
-  // (dimension 1) equal the registry's sets, also when a pixel is visited again.
-  for (const char* name : {"n-rooks", "multi-jittered", "latin-square", "cmj"}) {
-    PixelSampler sampler(settings(name, 16));
-    const unsigned d = std::string(name) == "latin-square" ? 3 : 2;
-    for (const auto& [x, y] : {std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{3u, 2u}}) {
-      SamplerRequest film;
-      film.n = 16, film.d = d;
-      film.seed = PixelSampler::set_seed_for_test(7, x, y, 0);
-      const PointSet film_set = generate_points(name, film);
-      for (std::uint32_t index = 0; index < 16; ++index) {
-        sampler.start_pixel_sample(x, y, index);
-        if (index % 3 == 0) {
-          EXPECT_EQ(sampler.get_1d(), film_set(index, 0)) << name << " " << index;
-        } else {
-          const auto p = sampler.get_2d();
-          EXPECT_EQ(p[0], film_set(index, 0)) << name << " " << index;
-          EXPECT_EQ(p[1], film_set(index, 1)) << name << " " << index;
-        }
-        SamplerRequest arrays;
-        arrays.n = 4, arrays.d = d;
-        arrays.seed = PixelSampler::array_seed_for_test(7, x, y, 1, index);
-        const PointSet array_set = generate_points(name, arrays);
-        std::array<double, 2> array[4];
-        sampler.get_2d_array(4, array);
-        for (std::uint32_t i = 0; i < 4; ++i) {
-          EXPECT_EQ(array[i][0], array_set(i, 0)) << name << " " << index << " " << i;
-          EXPECT_EQ(array[i][1], array_set(i, 1)) << name << " " << index << " " << i;
-        }
-      }
-    }
-  }
-}
-
 }  // namespace
 }  // namespace stratum::render
 
@@ -412,6 +374,19 @@ TEST(PixelSampler, ContinuedArraysUnderALowMemoryLimitBindPerSample) {
   EXPECT_EQ(limited, unlimited);
 }
 
+/// Sample `index`'s first draw (dimension 0) against the film set: get_1d
+/// every third sample (its first coordinate seeded alone), get_2d otherwise
+/// (both, the same pixel's state seeded again for the second).
+void expect_film_draw(PixelSampler& sampler, const PointSet& film_set, std::uint32_t index, const std::string& name) {
+  if (index % 3 == 0) {
+    EXPECT_EQ(sampler.get_1d(), film_set(index, 0)) << name << " " << index;
+  } else {
+    const auto p = sampler.get_2d();
+    EXPECT_EQ(p[0], film_set(index, 0)) << name << " " << index;
+    EXPECT_EQ(p[1], film_set(index, 1)) << name << " " << index;
+  }
+}
+
 TEST(PixelSampler, SeededSetsAndArraysEqualTheRegistrys) {
   // faure and halton under owen draw through the registry's SeededGenerator
   // (a seed's keys written in place per pixel and dimension, no generator
@@ -436,13 +411,7 @@ TEST(PixelSampler, SeededSetsAndArraysEqualTheRegistrys) {
         const PointSet array_set = generate_points(name, arrays);
         for (std::uint32_t index = 0; index < 16; ++index) {
           sampler.start_pixel_sample(x, y, index);
-          if (index % 3 == 0) {
-            EXPECT_EQ(sampler.get_1d(), film_set(index, 0)) << name << " " << index;
-          } else {
-            const auto p = sampler.get_2d();
-            EXPECT_EQ(p[0], film_set(index, 0)) << name << " " << index;
-            EXPECT_EQ(p[1], film_set(index, 1)) << name << " " << index;
-          }
+          expect_film_draw(sampler, film_set, index, name);
           std::array<double, 2> array[4];
           sampler.get_2d_array(4, array);
           for (std::uint32_t i = 0; i < 4; ++i) {
@@ -453,6 +422,38 @@ TEST(PixelSampler, SeededSetsAndArraysEqualTheRegistrys) {
         }
       }
     }
+}
+
+TEST(PixelSampler, WholeSetPatternsSeededInPlaceEqualTheRegistrys) {
+  // n-rooks, multi-jittered and latin-square (made as a whole set, their
+  // construction written in place per pixel and dimension) and cmj: the
+  // film set (dimension 0: get_1d seeds its first coordinate, a later get_2d
+  // of the same pixel both) and each sample's own 4-point shadow-ray array
+  // (dimension 1) equal the registry's sets, also when a pixel is visited again.
+  for (const char* name : {"n-rooks", "multi-jittered", "latin-square", "cmj"}) {
+    PixelSampler sampler(settings(name, 16));
+    const unsigned d = std::string(name) == "latin-square" ? 3 : 2;
+    for (const auto& [x, y] : {std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{3u, 2u}}) {
+      SamplerRequest film;
+      film.n = 16, film.d = d;
+      film.seed = PixelSampler::set_seed_for_test(7, x, y, 0);
+      const PointSet film_set = generate_points(name, film);
+      for (std::uint32_t index = 0; index < 16; ++index) {
+        sampler.start_pixel_sample(x, y, index);
+        expect_film_draw(sampler, film_set, index, name);
+        SamplerRequest arrays;
+        arrays.n = 4, arrays.d = d;
+        arrays.seed = PixelSampler::array_seed_for_test(7, x, y, 1, index);
+        const PointSet array_set = generate_points(name, arrays);
+        std::array<double, 2> array[4];
+        sampler.get_2d_array(4, array);
+        for (std::uint32_t i = 0; i < 4; ++i) {
+          EXPECT_EQ(array[i][0], array_set(i, 0)) << name << " " << index << " " << i;
+          EXPECT_EQ(array[i][1], array_set(i, 1)) << name << " " << index << " " << i;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
