@@ -1,5 +1,6 @@
 /// Registry entries of the finite patterns.
 #include <algorithm>
+#include <bit>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -225,6 +226,42 @@ class LatinSquareSeeded final : public InlinePoints<LatinSquareSeeded> {
   LatinSquare shape_;  ///< order, method and steps (its seed unused: coordinate_from reads none)
 };
 
+/// n-queens as a SeededGenerator: a seed's state is the jitter chain's
+/// shared link (word 0), its Cranley–Patterson shifts under cp (words 1, 2)
+/// and each point's two cells (x low, y high: n ≤ 2^32) after the solution's
+/// symmetry, so a renderer's set is one search and no generator bound per
+/// set. The points of its generator (tested).
+class NQueensSeeded final : public InlinePoints<NQueensSeeded> {
+ public:
+  NQueensSeeded(std::uint64_t count, NQueens::Method method, bool rotate)
+      : count_(count), method_(method), rotate_(rotate) {}
+  std::size_t state_words() const noexcept override { return 3 + count_; }
+  void seed(std::uint64_t seed, unsigned, std::uint64_t* state) const noexcept override {
+    const NQueens queens(count_, seed, method_);  // the request was validated: no throw (its search allocates)
+    state[0] = queens.jitter_key();
+    if (rotate_) {
+      const CranleyPattersonRotation rotation(seed);
+      state[1] = std::bit_cast<std::uint64_t>(rotation.shift(0)),
+      state[2] = std::bit_cast<std::uint64_t>(rotation.shift(1));
+    }
+    for (std::uint64_t i = 0; i < count_; ++i) state[3 + i] = queens.cell(i, 0) | queens.cell(i, 1) << 32;
+  }
+  void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
+             double* out) const noexcept override {
+    const std::uint64_t cells = state[3 + index];
+    for (unsigned j = 0; j < coordinates; ++j) {
+      const double value =
+          NQueens::coordinate_from(state[0], count_, j == 0 ? cells & 0xffffffffULL : cells >> 32, index, j);
+      out[j] = rotate_ ? CranleyPattersonRotation::rotate(value, std::bit_cast<double>(state[1 + j])) : value;
+    }
+  }
+
+ private:
+  std::uint64_t count_;
+  NQueens::Method method_;
+  bool rotate_;
+};
+
 /// cmj as a SeededGenerator: the construction (its domains and dividers)
 /// built once, a seed's state what a point needs of Kensler's pattern p
 /// (CorrelatedMultiJittered::Keys: eight 32-bit words, two per state word);
@@ -446,6 +483,10 @@ std::vector<SamplerInfo> patterns() {
       .count = requested_count,
       .generate = generate_rotated(n_queens_pattern),
       .bind = bind_rotated(n_queens_pattern),
+      .seeded = [](const SamplerRequest& request) -> std::shared_ptr<const SeededGenerator> {
+        return std::make_shared<const NQueensSeeded>(*request.n, n_queens_method(request),
+                                                     request.randomizer == Randomizer::cp);
+      },
   });
 
   list.push_back({

@@ -97,7 +97,7 @@ TEST(GeneratorBinder, ValidatesOnceAtConstructionWithTheRegistrysMessages) {
 TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
   // Where a sampler has a SeededGenerator (base-b owen; the constructions
   // that do not depend on the seed, under none and cp; cmj's, the keys of
-  // Kensler's pattern), a seed's state written in place gives bind's points, for the
+  // Kensler's pattern; n-queens', its solution's cells), a seed's state written in place gives bind's points, for the
   // leading coordinates asked and for all of them; other randomizers have
   // none (bind stays the path).
   std::set<std::string> seeded;
@@ -128,10 +128,11 @@ TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
         }
       }
   }
-  EXPECT_EQ(seeded, (std::set<std::string>{"faure:owen", "halton:owen", "grid:none", "grid:cp", "zaremba:none",
-                                           "zaremba:cp", "kronecker:none", "kronecker:cp", "lattice-sequence:none",
-                                           "lattice-sequence:cp", "cmj:none", "fibonacci:none", "fibonacci:cp",
-                                           "lattice:none", "lattice:cp", "hammersley:permute"}));
+  EXPECT_EQ(seeded,
+            (std::set<std::string>{"faure:owen", "halton:owen", "grid:none", "grid:cp", "zaremba:none", "zaremba:cp",
+                                   "kronecker:none", "kronecker:cp", "lattice-sequence:none", "lattice-sequence:cp",
+                                   "cmj:none", "fibonacci:none", "fibonacci:cp", "lattice:none", "lattice:cp",
+                                   "hammersley:permute", "n-queens:none", "n-queens:cp"}));
 }
 
 TEST(SetBinder, GeneratesWhatGeneratePointsGeneratesForEverySeed) {

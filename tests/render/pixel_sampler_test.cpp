@@ -426,11 +426,12 @@ TEST(PixelSampler, SeededSetsAndArraysEqualTheRegistrys) {
 
 TEST(PixelSampler, WholeSetPatternsSeededInPlaceEqualTheRegistrys) {
   // n-rooks, multi-jittered and latin-square (made as a whole set, their
-  // construction written in place per pixel and dimension) and cmj: the
+  // construction written in place per pixel and dimension), cmj and
+  // n-queens (under its default cp: the solution's cells and shifts): the
   // film set (dimension 0: get_1d seeds its first coordinate, a later get_2d
   // of the same pixel both) and each sample's own 4-point shadow-ray array
   // (dimension 1) equal the registry's sets, also when a pixel is visited again.
-  for (const char* name : {"n-rooks", "multi-jittered", "latin-square", "cmj"}) {
+  for (const char* name : {"n-rooks", "multi-jittered", "latin-square", "cmj", "n-queens"}) {
     PixelSampler sampler(settings(name, 16));
     const unsigned d = std::string(name) == "latin-square" ? 3 : 2;
     for (const auto& [x, y] : {std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{3u, 2u}}) {
