@@ -190,11 +190,11 @@ class MultiJitteredSeeded final : public InlinePoints<MultiJitteredSeeded> {
   void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
              double* out) const noexcept override {
     for (unsigned j = 0; j < coordinates; ++j)
-      out[j] = shape_.coordinate(state[1 + j * shape_.count() + index], state[0], index, j);
+      out[j] = jittered_cell(state[1 + j * shape_.count() + index], state[0], index, j, shape_.count());
   }
 
  private:
-  MultiJittered shape_;  ///< columns and rows (its seed unused: coordinate reads none)
+  MultiJittered shape_;  ///< columns and rows (its seed unused)
 };
 
 /// A Latin square as a SeededGenerator: a seed's state is the jitter
@@ -250,8 +250,7 @@ class NQueensSeeded final : public InlinePoints<NQueensSeeded> {
              double* out) const noexcept override {
     const std::uint64_t cells = state[3 + index];
     for (unsigned j = 0; j < coordinates; ++j) {
-      const double value =
-          NQueens::coordinate_from(state[0], count_, j == 0 ? cells & 0xffffffffULL : cells >> 32, index, j);
+      const double value = jittered_cell(j == 0 ? cells & 0xffffffffULL : cells >> 32, state[0], index, j, count_);
       out[j] = rotate_ ? CranleyPattersonRotation::rotate(value, std::bit_cast<double>(state[1 + j])) : value;
     }
   }

@@ -314,11 +314,8 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
   if (set_binder_) {
     if (!array_binder_ || array_binder_->count() != n)
       array_binder_.emplace(settings_.sampler, set_request(seed, n, start));
-    if (const auto& seeded = array_binder_->seeded()) {  // a set per sample, seeded in place
-      seeded_scratch_.resize(seeded->state_words());
-      seeded->seed(seed, 2, seeded_scratch_.data());
-      return seeded_array(*seeded, seeded_scratch_.data(), start, n, out);
-    }
+    if (const auto& seeded = array_binder_->seeded())  // a set per sample, seeded in place
+      return seeded_sample_array(*seeded, seed, start, n, out);
     const PointGenerator generator = array_binder_->bind(seed, start);
     for (std::uint32_t i = 0; i < n; ++i) out[i] = {generator.sample(start + i, 0), generator.sample(start + i, 1)};
     return;
@@ -326,15 +323,18 @@ void PixelSampler::get_2d_array_slow(std::uint64_t seed, std::uint32_t dimension
   const bool made_whole = start == 0 && !keyed_ && !tables_;  // a pattern's set per sample, through its SetBinder
   if (made_whole && (!array_maker_ || array_maker_->count() != n))
     array_maker_.emplace(settings_.sampler, set_request(seed, n, 0));
-  if (made_whole && array_maker_->seeded()) {  // the set's state written in place (n-rooks: its permutations)
-    const SeededGenerator& seeded = *array_maker_->seeded();
-    seeded_scratch_.resize(seeded.state_words());
-    seeded.seed(seed, 2, seeded_scratch_.data());
-    return seeded_array(seeded, seeded_scratch_.data(), 0, n, out);
-  }
+  if (made_whole && array_maker_->seeded())  // the set's state written in place (n-rooks: its permutations)
+    return seeded_sample_array(*array_maker_->seeded(), seed, 0, n, out);
   const PointSet set =  // points start … start + n − 1
       made_whole ? array_maker_->generate(seed) : draw(settings_.sampler, n, 2, seed, start);
   for (std::uint32_t i = 0; i < n; ++i) out[i] = {set(i, 0), set(i, 1)};
+}
+
+void PixelSampler::seeded_sample_array(const SeededGenerator& generator, std::uint64_t seed, std::uint64_t start,
+                                       std::uint32_t n, std::array<double, 2>* out) {
+  seeded_scratch_.resize(generator.state_words());
+  generator.seed(seed, 2, seeded_scratch_.data());
+  seeded_array(generator, seeded_scratch_.data(), start, n, out);
 }
 
 void PixelSampler::seeded_array(const SeededGenerator& generator, const std::uint64_t* state, std::uint64_t start,

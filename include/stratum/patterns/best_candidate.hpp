@@ -167,9 +167,7 @@ class BestCandidate {
       std::uint64_t best_index = 0;
       for (std::uint64_t candidate = 0; candidate < count; ++candidate) {
         coordinates<D>(key, candidate, x);
-        double nearest2 = std::numeric_limits<double>::infinity();
-        for (std::uint64_t p = 0; p < i; ++p)
-          nearest2 = std::min(nearest2, NeighborGrid::distance_squared(x, points + p * D, D, periodic_));
+        const double nearest2 = NeighborGrid::nearest_squared(x, points, i, D, periodic_);
         if (nearest2 > best2) best2 = nearest2, best_index = candidate;
       }
       coordinates<D>(key, best_index, x);

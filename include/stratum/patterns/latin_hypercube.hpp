@@ -54,7 +54,7 @@ class LatinHypercube {
   /// dim) = hash64_extend(hash64_extend(hash64(key), index), dim), so a row
   /// shares its first link (row_key(index)) over its coordinates, and every
   /// row the link before it, jitter_key() = hash64(key).
-  std::uint64_t jitter_key() const noexcept { return hash64(hash64(seed_, 0x4a4954544552ULL)); }
+  std::uint64_t jitter_key() const noexcept { return jitter_chain(seed_, 0x4a4954544552ULL); }
   std::uint64_t row_key(std::uint64_t index) const noexcept { return row_key_of(jitter_key(), index); }
   static std::uint64_t row_key_of(std::uint64_t jitter_key, std::uint64_t index) noexcept {
     return hash64_extend(jitter_key, index);

@@ -100,16 +100,15 @@ class LatinSquare {
   Real coordinate(std::uint64_t index, unsigned dim, std::uint32_t symbol) const noexcept {
     return coordinate_from<Real>(jitter_key(), index, dim, symbol);
   }
-  /// The jitter hashes as a chain: uniform01(hash64(seed, tag), index, dim)
-  /// = bits of hash64_extend(hash64_extend(jitter_key(), index), dim).
-  std::uint64_t jitter_key() const noexcept { return hash64(hash64(seed_, 0x4c534a4954ULL)); }
+  /// The jitter chain (strata.hpp) of the square's points.
+  std::uint64_t jitter_key() const noexcept { return jitter_chain(seed_, 0x4c534a4954ULL); }
   /// coordinate(index, dim, symbol) from jitter_key(); rows and columns (dim
   /// 0, 1) need no symbol: each 2D projection of those is a jittered grid.
   template <class Real = double>
   Real coordinate_from(std::uint64_t jitter_key, std::uint64_t index, unsigned dim,
                        std::uint32_t symbol) const noexcept {
     const std::uint64_t cell = dim == 0 ? index / order_ : dim == 1 ? index % order_ : symbol;
-    return cell_coordinate<Real>(cell, bits_to_double(hash64_extend(hash64_extend(jitter_key, index), dim)), order_);
+    return jittered_cell<Real>(cell, jitter_key, index, dim, order_);
   }
 
  private:

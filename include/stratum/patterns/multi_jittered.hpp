@@ -148,7 +148,7 @@ class MultiJittered {
   void fill_x(std::uint64_t column, Real* out, Index* scratch) const noexcept {
     const std::uint64_t key = jitter_key();
     column_cells(column, scratch, [&](std::uint64_t index, std::uint64_t cell) {
-      out[2 * index] = coordinate<Real>(cell, key, index, 0);
+      out[2 * index] = jittered_cell<Real>(cell, key, index, 0, count());
     });
   }
   /// Writes the y coordinates of coarse row j into out.
@@ -156,7 +156,7 @@ class MultiJittered {
   void fill_y(std::uint64_t row, Real* out, Index* scratch) const noexcept {
     const std::uint64_t key = jitter_key();
     row_cells(row, scratch, [&](std::uint64_t index, std::uint64_t cell) {
-      out[2 * index + 1] = coordinate<Real>(cell, key, index, 1);
+      out[2 * index + 1] = jittered_cell<Real>(cell, key, index, 1, count());
     });
   }
   /// All count() points, row-major (x, y), with scratch_size() integers of scratch.
@@ -180,14 +180,9 @@ class MultiJittered {
     random_permutation(scratch, columns_, hash64(seed_, 0x4d4a59ULL, row));
     for (std::uint64_t i = 0; i < columns_; ++i) visit(row * columns_ + i, row * columns_ + scratch[i]);
   }
-  /// The jitter hashes as a chain: uniform01(hash64(seed, tag), index, dim)
-  /// = bits of hash64_extend(hash64_extend(jitter_key(), index), dim).
-  std::uint64_t jitter_key() const noexcept { return hash64(hash64(seed_, 0x4d4a4a4954ULL)); }
-  /// Coordinate dim of point `index` in its fine interval `cell`, from jitter_key().
-  template <class Real = double>
-  Real coordinate(std::uint64_t cell, std::uint64_t jitter_key, std::uint64_t index, unsigned dim) const noexcept {
-    return cell_coordinate<Real>(cell, bits_to_double(hash64_extend(hash64_extend(jitter_key, index), dim)), count());
-  }
+  /// The jitter chain (strata.hpp) of the set: point `index` in fine interval
+  /// `cell` of coordinate dim is jittered_cell(cell, jitter_key(), index, dim, count()).
+  std::uint64_t jitter_key() const noexcept { return jitter_chain(seed_, 0x4d4a4a4954ULL); }
 
  private:
   std::uint64_t columns_;

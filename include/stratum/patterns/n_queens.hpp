@@ -135,17 +135,10 @@ class NQueens {
 
   template <class Real = double>
   Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return coordinate_from<Real>(jitter_key(), count_, cell(index, dim), index, dim);
+    return jittered_cell<Real>(cell(index, dim), jitter_key(), index, dim, count_);
   }
-  /// The jitter hashes as a chain: uniform01(hash64(seed, tag), index, dim)
-  /// = bits of hash64_extend(hash64_extend(jitter_key(), index), dim).
-  std::uint64_t jitter_key() const noexcept { return hash64(hash64(seed_, 0x514a4954ULL)); }
-  /// sample(index, dim) of an n-point set from its jitter_key() and cell(index, dim).
-  template <class Real = double>
-  static Real coordinate_from(std::uint64_t jitter_key, std::uint64_t count, std::uint64_t cell, std::uint64_t index,
-                              unsigned dim) noexcept {
-    return cell_coordinate<Real>(cell, bits_to_double(hash64_extend(hash64_extend(jitter_key, index), dim)), count);
-  }
+  /// The jitter chain (strata.hpp): sample(index, dim) is jittered_cell(cell(index, dim), jitter_key(), index, dim, n).
+  std::uint64_t jitter_key() const noexcept { return jitter_chain(seed_, 0x514a4954ULL); }
 
   /// Hoffman–Loessi–Moore column of row r (0-based) for n ≥ 4 (or n = 1).
   static constexpr std::uint64_t explicit_column(std::uint64_t r, std::uint64_t n) noexcept {

@@ -13,6 +13,7 @@
 /// visitor gets each candidate index and looks its coordinates up itself,
 /// so the caller may keep them in a growing std::vector.
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -113,6 +114,15 @@ class NeighborGrid {
       sum += along * along;
     }
     return sum;
+  }
+  /// The smallest distance_squared from x to `count` points (row-major, d
+  /// coordinates each), measured against every one: small sets' brute force.
+  static double nearest_squared(const double* x, const double* points, std::uint64_t count, unsigned d,
+                                bool periodic) noexcept {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::uint64_t p = 0; p < count; ++p)
+      nearest = std::min(nearest, distance_squared(x, points + p * d, d, periodic));
+    return nearest;
   }
 
   /// Calls visit(index) for every stored point in a cell whose distance to

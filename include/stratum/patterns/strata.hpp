@@ -61,6 +61,17 @@ inline Real cell_coordinate(std::uint64_t cell, double offset, std::uint64_t cou
   }
 }
 
+/// A set's jitter offsets uniform01(hash64(seed, tag), index, dim) as a
+/// chain: hash64 extends link by link (hash64_extend), so the set computes
+/// jitter_chain(seed, tag) once and each coordinate two links (jittered_cell).
+inline std::uint64_t jitter_chain(std::uint64_t seed, std::uint64_t tag) noexcept { return hash64(hash64(seed, tag)); }
+/// cell_coordinate of `cell` jittered by uniform01(hash64(seed, tag), index, dim), from jitter_chain(seed, tag).
+template <class Real = double>
+inline Real jittered_cell(std::uint64_t cell, std::uint64_t chain, std::uint64_t index, unsigned dim,
+                          std::uint64_t count) noexcept {
+  return cell_coordinate<Real>(cell, bits_to_double(hash64_extend(hash64_extend(chain, index), dim)), count);
+}
+
 /// a^b, or nullopt when it exceeds 2^64 - 1.
 constexpr std::optional<std::uint64_t> checked_power(std::uint64_t base, unsigned exponent) noexcept {
   std::uint64_t result = 1;

@@ -111,12 +111,8 @@ class Pmj02Bn {
   /// candidate cannot win then).
   static double nearest_squared(const NeighborGrid& grid, const std::vector<double>& xy, const double* x,
                                 std::uint64_t placed, double beat) {
-    if (placed <= brute_points) {  // every point: fewer distances than the grid's cells a query visits
-      double nearest = std::numeric_limits<double>::infinity();
-      for (std::uint64_t i = 0; i < placed; ++i)
-        nearest = std::min(nearest, NeighborGrid::distance_squared(x, &xy[2 * i], 2, true));
-      return nearest;
-    }
+    // Every point: fewer distances than the grid's cells a query visits.
+    if (placed <= brute_points) return NeighborGrid::nearest_squared(x, xy.data(), placed, 2, true);
     double radius = 1.5 / std::sqrt(static_cast<double>(placed));
     for (;;) {
       double nearest = std::numeric_limits<double>::infinity();

@@ -194,6 +194,9 @@ class PixelSampler {
   /// out[i] = point start + i of a seeded state (i < n).
   void seeded_array(const SeededGenerator& generator, const std::uint64_t* state, std::uint64_t start, std::uint32_t n,
                     std::array<double, 2>* out);
+  /// seeded_array of this sample's own set of `seed`, its state written into seeded_scratch_.
+  void seeded_sample_array(const SeededGenerator& generator, std::uint64_t seed, std::uint64_t start, std::uint32_t n,
+                           std::array<double, 2>* out);
   /// The request for `n` points from `start` of the pixel sampler's set with
   /// `seed` (its randomizer, its dimensions).
   SamplerRequest set_request(std::uint64_t seed, std::uint64_t n, std::uint64_t start) const;
