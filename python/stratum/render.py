@@ -34,7 +34,9 @@ def render(scene=None, width: int | None = None, height: int | None = None, spp:
     Cornell box) and returns the linear image as float64 of shape
     (height, width, 3), top row first.
 
-    The options are those of `stratum render`. with_variance=True returns
+    The options are those of `stratum render`; sampler is a spec
+    (docs/samplers.md), e.g. "sobol:owen" or "cmj(aspect=2)", whose
+    parameters hold for every set it draws. with_variance=True returns
     (image, variance): the variance of each pixel's mean per channel (the
     samples taken as independent). reference=True returns the converged
     reference of this estimand instead (reference_spp Owen-scrambled Sobol'

@@ -108,7 +108,7 @@ def test_one_thread_rule_zero_is_every_core():
                 call()
 
 
-def test_render_takes_specs_without_parameters():
+def test_render_takes_the_same_specs():
     if not RENDERER:
         pytest.skip(NO_RENDERER)
     a = stratum.render(width=8, height=8, spp=4, sampler="sobol:owen", seed=1, passes=1)
@@ -116,8 +116,18 @@ def test_render_takes_specs_without_parameters():
     np.testing.assert_array_equal(a, b)
     c = stratum.render(width=8, height=8, spp=4, sampler="sobol:xor", seed=1, passes=1)
     assert not np.array_equal(a, c)
-    with pytest.raises(stratum.InvalidArgument, match="the renderer's pixel sampler takes no sampler parameters"):
+    # Parameters reach every set the sampler draws (pixel sets and shadow-ray arrays).
+    aspect = stratum.render(width=8, height=8, spp=16, sampler="cmj(aspect=2)", seed=1, passes=1)
+    plain = stratum.render(width=8, height=8, spp=16, sampler="cmj", seed=1, passes=1)
+    assert not np.array_equal(aspect, plain)
+    strata = stratum.render(width=8, height=8, spp=4, light_samples=4, sampler="jittered(strata=2x2)", seed=1)
+    np.testing.assert_array_equal(strata, stratum.render(width=8, height=8, spp=4, light_samples=4,
+                                                         sampler="jittered", seed=1))
+    with pytest.raises(stratum.InvalidArgument,
+                       match=r"invalid light-samples = 1: the sampler jittered\(strata=2x2\) cannot draw"):
         stratum.render(width=8, height=8, spp=4, sampler="jittered(strata=2x2)")
+    with pytest.raises(stratum.InvalidArgument, match="pixel is the renderer's own for an image sampler"):
+        stratum.render(width=8, height=8, spp=4, sampler="sobol-bn(pixel=1,1)")
     with pytest.raises(stratum.InvalidArgument, match="invalid sampler = sobl: unknown sampler 'sobl'"):
         stratum.render(width=8, height=8, spp=4, sampler="sobl")
 

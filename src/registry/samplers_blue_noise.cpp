@@ -95,8 +95,7 @@ SamplerInfo ranked_entry(const RankedEntry& e) {
           },
       .count = requested_count,
       .generate = [base](const SamplerRequest& request) { return generate_ranked(request, base); },
-      .ranked_image = [base](std::uint64_t spp,
-                             std::uint64_t seed) { return RankedBlueNoise(default_blue_noise_table(base), spp, seed); },
+      .ranked_image = [base](const SamplerRequest& request) { return ranked_table(request, base); },
   };
 }
 

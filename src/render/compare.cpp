@@ -106,20 +106,17 @@ std::vector<CompareConfig> parse_configs(const nlohmann::json& configs, unsigned
   for (std::size_t i = 0; i < result.size(); ++i) {
     RenderSettings& s = result[i].settings;
     // "sampler" is a spec (docs/samplers.md); "randomize" its :RANDOMIZER part, given once.
-    set_pixel_sampler(s.sampler, "configs[" + std::to_string(i) + "].sampler", s.sampler.sampler, {},
-                      s.sampler.randomize);
+    set_pixel_sampler(s.sampler, s.sampler.sampler, {}, s.sampler.randomize);
     validate_settings(s);
   }
   return result;
 }
 
-void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
-                       const std::vector<std::string>& params, const std::string& randomize) {
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& spec, const std::vector<std::string>& params,
+                       const std::string& randomize) {
   const SamplerSpec parsed = combine_sampler_options(spec, params, randomize);
-  if (!parsed.params.empty())
-    throw invalid_argument(argument, format_sampler_spec(parsed),
-                           "the renderer's pixel sampler takes no sampler parameters; give NAME or NAME:RANDOMIZER");
   settings.sampler = parsed.name;
+  settings.params = parsed.params;
   settings.randomize = parsed.randomize;
 }
 

@@ -10,6 +10,7 @@
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum::render {
@@ -53,10 +54,16 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   const std::string& name = settings_.sampler;
   const SamplerInfo& info = find_sampler(name);
   if (info.flags.space_time)
-    throw invalid_argument("sampler", name,
+    throw invalid_argument("sampler", spec(),
                            "is a space-time pattern (x, y, t) that draws film positions and times together: give it "
                            "as --time-pattern random, cook or magic-square (Python time_pattern=) beside a pixel "
                            "sampler");
+  if (info.zsobol_image || info.ranked_image)
+    for (const char* own : {"pixel", "resolution"})
+      if (settings_.params.contains(own))
+        throw invalid_argument("sampler", spec(),
+                               std::string(own) + " is the renderer's own for an image sampler (it draws every pixel " +
+                                   "of the image, whose size it knows): leave it out");
   // A sampler defined from 3 dimensions on (latin-square: an orthogonal
   // array, every 2D projection one point per cell) gives each pair its first two.
   sampler_dims_ = std::max(2u, info.min_dim);
@@ -66,8 +73,11 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   arrays_continue_ = info.flags.progressive;
   seed_ = continues || settings_.frame == 0 ? settings_.seed : hash64(settings_.seed, tag_frame, settings_.frame);
   const Randomizer randomizer = r.empty() ? info.randomization.default_randomizer : parse_randomizer(r);
-  if (info.keyed_pairs) keyed_ = info.keyed_pairs(randomizer);
-  if (info.pair_tables) tables_ = info.pair_tables(randomizer);
+  // The keyed pairs and pair tables draw the default parameters' sets; with
+  // parameters the sets come from the registry's generators.
+  const bool defaults = settings_.params.empty();
+  if (info.keyed_pairs && defaults) keyed_ = info.keyed_pairs(randomizer);
+  if (info.pair_tables && defaults) tables_ = info.pair_tables(randomizer);
   has_spacetime_ = !spacetime_.empty();
   tables_direct_ = tables_ && offset_ + settings_.spp <= HaltonPairTables::max_points;
   if (info.bind && !keyed_ && !tables_) set_binder_.emplace(name, set_request(seed_, settings_.spp, offset_));
@@ -76,7 +86,12 @@ PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(
   pixel_seeded_ = set_binder_ ? set_binder_->seeded() : set_maker_ ? set_maker_->seeded() : nullptr;
   spp_root_ = integer_root(settings_.spp, 2);
   if (info.zsobol_image) zsobol_.emplace(info.zsobol_image(std::max(1u, settings_.resolution), settings_.spp, seed_));
-  if (info.ranked_image) ranked_bn_.emplace(info.ranked_image(settings_.spp, seed_));
+  if (info.ranked_image) {
+    SamplerRequest request = set_request(seed_, settings_.spp, 0);  // validated above
+    request.values = bind_params(name, info.params, request.params);
+    ranked_tile_ = info.ranked_image(request);
+    ranked_bn_.emplace(*ranked_tile_, settings_.spp, seed_);
+  }
 }
 
 PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings_) {
@@ -90,7 +105,11 @@ PixelSampler::PixelSampler(const PixelSampler& other) : settings_(other.settings
   has_spacetime_ = other.has_spacetime_, spp_root_ = other.spp_root_;
   seed_ = other.seed_, offset_ = other.offset_;
   zsobol_ = other.zsobol_, zsobol_pairs_ = other.zsobol_pairs_;
-  ranked_bn_ = other.ranked_bn_, ranked_bn_shared_ = other.ranked_bn_shared_;
+  ranked_bn_ = other.ranked_bn_, ranked_bn_shared_ = other.ranked_bn_shared_, ranked_tile_ = other.ranked_tile_;
+}
+
+std::string PixelSampler::spec() const {
+  return format_sampler_spec({settings_.sampler, settings_.params, settings_.randomize});
 }
 
 PointSet PixelSampler::draw(const std::string& sampler, std::uint64_t n, unsigned d, std::uint64_t seed,
@@ -171,6 +190,7 @@ SamplerRequest PixelSampler::set_request(std::uint64_t seed, std::uint64_t n, st
   request.seed = seed;
   request.start = start;
   request.randomize = settings_.randomize;
+  request.params = settings_.params;
   return request;
 }
 

@@ -39,7 +39,7 @@ void validate_settings(const RenderSettings& s) {
   } catch (const invalid_argument& e) {
     throw invalid_argument(
         "light-samples", std::to_string(s.light_samples),
-        "the sampler " + s.sampler.sampler + " cannot draw that many points per shading point (" + e.what() + ")");
+        "the sampler " + sampler.spec() + " cannot draw that many points per shading point (" + e.what() + ")");
   }
 }
 

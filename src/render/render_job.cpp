@@ -35,7 +35,7 @@ void prepare_render_job(RenderJob& job) {
   require(job.spp >= 1 && job.spp <= max_spp, "spp", job.spp, "must be in [1, 2^24]");
   RenderSettings& s = job.settings;
   s.sampler.spp = static_cast<std::uint32_t>(job.spp);
-  set_pixel_sampler(s.sampler, "sampler", job.sampler, job.sampler_params, job.randomize);
+  set_pixel_sampler(s.sampler, job.sampler, job.sampler_params, job.randomize);
   s.sampler.seed = job.seed;
   require(job.frame >= 0 && job.frame <= std::int64_t{0xffffffff}, "frame", job.frame,
           "must be an integer in [0, 2^32 - 1] with (frame + 1) * spp <= 2^32");

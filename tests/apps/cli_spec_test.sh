@@ -18,7 +18,7 @@ run_with() {
     integrate) "$stratum" integrate --integrand disk --sampler "$spec" -n 32 "$@" ;;
     converge) "$stratum" converge --integrand disk --samplers "$spec" --n 32 --runs 2 "$@" ;;
     mitchell) "$stratum" study mitchell --sampler "$spec" --counts 32 --realizations 1 --lines 100 "$@" ;;
-    render) "$stratum" render --sampler "$spec" --spp 4 --width 8 --height 8 -q -o "$tmp/r.png" "$@" ;;
+    render) "$stratum" render --sampler "$spec" --spp 32 --light-samples 32 --width 4 --height 4 -q -o "$tmp/r.png" "$@" ;;
   esac
 }
 # Every subcommand with -s/--sampler, -p and --randomize; `study mitchell --sampler` takes extra
@@ -26,8 +26,8 @@ run_with() {
 with_params="points discrepancy local-discrepancy koksma-hlawka spectrum warp integrate converge"
 renderer=false
 if has_render; then renderer=true; fi
-options=$with_params  # render takes specs without parameters (below)
-$renderer && options="$options render"
+$renderer && with_params="$with_params render"
+options=$with_params
 commands="$options mitchell"
 
 # Accepted everywhere.
@@ -95,8 +95,19 @@ commands=$with_params same_error "invalid param = periodic=0: conflicts with per
   'poisson-disk(periodic=1)' -p periodic=0
 commands=$with_params same_error "invalid param = bogus=1: poisson-disk takes candidates, periodic" 'poisson-disk' -p bogus=1
 if $renderer; then
-  expect_error "the renderer's pixel sampler takes no sampler parameters" render --sampler 'jittered(strata=2x2)' --spp 4 \
-    --width 8 --height 8 -q -o "$tmp/r.png"
+  # The renderer's sets are the sampler's under its parameters: cmj(aspect=2) is not cmj; the spec and -p agree.
+  render_exr() { "$stratum" render --spp 16 --width 8 --height 8 -q "$@"; }
+  render_exr -s 'cmj(aspect=2)' -o "$tmp/a.exr" && render_exr -s cmj -p aspect=2 -o "$tmp/b.exr" &&
+    render_exr -s cmj -o "$tmp/c.exr" && ok || fail "render -s 'cmj(aspect=2)'"
+  cmp -s "$tmp/a.exr" "$tmp/b.exr" && ! cmp -s "$tmp/a.exr" "$tmp/c.exr" && ok ||
+    fail "render: cmj(aspect=2) and -p aspect=2 differ, or equal plain cmj"
+  # The shadow-ray arrays are sets of the same sampler: strata=4x4 needs 16 light samples.
+  rm -f "$tmp/r.png"
+  expect_error "invalid light-samples = 1: the sampler jittered(strata=4x4) cannot draw that many points per shading \
+point (invalid n = 1: must equal the product of strata=4x4)" render -s 'jittered(strata=4x4)' --spp 16 -q -o "$tmp/r.png"
+  expect_error "invalid sampler = zsobol(resolution=8): resolution is the renderer's own for an image sampler" \
+    render -s 'zsobol(resolution=8)' --spp 4 --width 8 --height 8 -q -o "$tmp/r.png"
+  [ ! -e "$tmp/r.png" ] && ok || fail "a refused render wrote its output"
 fi
 # The parameters of what is not the sampler have their own flags.
 expect_error "invalid sampler = random" integrate --integrand disk --sampler 'random(a=1)' -n 8

@@ -4,6 +4,7 @@
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "stratum/render/compare.hpp"
 #include "stratum/util/error.hpp"
@@ -38,6 +39,11 @@ TEST(Compare, ConfigsAreParsedAndCheckedByName) {
   EXPECT_EQ(configs[0].settings.light_samples, 3u);
   EXPECT_TRUE(configs[0].settings.pixel_centers);
   EXPECT_EQ(configs[0].settings.threads, 2u);
+  // "sampler" is a spec: its parameters and randomizer reach the pixel sampler's settings.
+  const auto spec = parse_configs(nlohmann::json::parse(R"([{"sampler": "cmj(aspect=2):none"}])"), 1, 0);
+  EXPECT_EQ(spec[0].settings.sampler.sampler, "cmj");
+  EXPECT_EQ(spec[0].settings.sampler.params, (std::map<std::string, std::string>{{"aspect", "2"}}));
+  EXPECT_EQ(spec[0].settings.sampler.randomize, "none");
   auto message = [](const char* text) {
     try {
       parse_configs(nlohmann::json::parse(text), 1, 0);
@@ -50,6 +56,7 @@ TEST(Compare, ConfigsAreParsedAndCheckedByName) {
   EXPECT_NE(message(R"([{"spp": 0}])").find("configs[0].spp"), std::string::npos);
   EXPECT_NE(message(R"([{"integrator": "bdpt"}])").find("integrator"), std::string::npos);
   EXPECT_NE(message(R"([])").find("configs"), std::string::npos);
+  EXPECT_NE(message(R"j([{"sampler": "cmj(aspect=-1)"}])j").find("invalid aspect = -1"), std::string::npos);
   EXPECT_THROW(builtin_comparison("nope", 1, 0), invalid_argument);
   for (const auto& [name, description] : builtin_comparisons())
     EXPECT_FALSE(builtin_comparison(name, 1, 0).empty()) << name;

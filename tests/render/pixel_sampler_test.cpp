@@ -1,16 +1,22 @@
 // The renderer's pbrt-style sampler over the registry (src/render/pixel_sampler.cpp).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/render/pixel_sampler.hpp"
+#include "stratum/sequences/ranked_blue_noise.hpp"
 #include "stratum/util/error.hpp"
 #include "../sequences/zero_net.hpp"
 
@@ -453,6 +459,157 @@ TEST(PixelSampler, WholeSetPatternsSeededInPlaceEqualTheRegistrys) {
           EXPECT_EQ(array[i][1], array_set(i, 1)) << name << " " << index << " " << i;
         }
       }
+    }
+  }
+}
+
+TEST(PixelSampler, ASpecsParametersReachEverySetTheSamplerDraws) {
+  // render -s 'cmj(aspect=2)': the film set (dimension 0) and the 16-point
+  // shadow-ray arrays (dimension 1: each sample's own set for a pattern, the
+  // pixel's continued set for a progressive sampler) are the registry's sets
+  // under the parameters, also where the defaults draw through keyed pairs or
+  // pair tables (sobol, zero-two, jittered, halton). Every sampler with
+  // parameters is here but the image samplers (below).
+  struct Case {
+    std::string name;
+    std::map<std::string, std::string> params;
+    std::uint32_t spp = 16;  ///< also the arrays' count
+    /// false where the parameter changes no 2D point: fibonacci's strict
+    /// only refuses counts, latin-square's method makes its symbols
+    /// (coordinate 2; the renderer draws rows and columns)
+    bool moves_points = true;
+  };
+  const std::vector<Case> specs = {
+      {"halton", {{"bases", "5,7"}}},
+      {"sobol", {{"order", "natural"}, {"bits", "12"}}},
+      {"zero-two", {{"bits", "7"}}},
+      {"pmj02bn", {{"candidates", "3"}}},
+      {"fibonacci", {{"strict", "1"}}, 13, false},
+      {"lattice", {{"generator", "1,5"}}},
+      {"kronecker", {{"alpha", "0.3,0.71"}, {"offset", "0.25"}}},
+      {"lattice-sequence", {{"generator", "1,7"}}},
+      {"grid", {{"strata", "2x8"}}},
+      {"jittered", {{"strata", "8x2"}}},
+      {"n-rooks", {{"centered", "1"}}},
+      {"latin-hypercube", {{"centered", "1"}}},
+      {"multi-jittered", {{"strata", "2x8"}}},
+      {"cmj", {{"aspect", "2"}}},
+      {"n-queens", {{"method", "formula"}}},
+      {"latin-square", {{"method", "permuted-cyclic"}}, 16, false},
+      {"poisson-disk", {{"periodic", "1"}}},
+      {"best-candidate", {{"candidates", "4"}, {"periodic", "0"}}},
+  };
+  std::set<std::string> covered;
+  for (const auto& [name, params, spp, moves_points] : specs) {
+    covered.insert(name);
+    PixelSamplerSettings s = settings(name, spp);
+    s.params = params;
+    PixelSampler sampler(s);
+    EXPECT_FALSE(sampler.direct()) << name;
+    const SamplerInfo& info = find_sampler(name);
+    const unsigned d = std::max(2u, info.min_dim);
+    const auto registry_set = [&](std::uint64_t n, std::uint64_t seed, bool with_params = true) {
+      SamplerRequest request;
+      request.n = n, request.d = d, request.seed = seed;
+      if (with_params) request.params = params;
+      return generate_points(name, request);
+    };
+    const bool continued = info.flags.progressive;
+    bool differs = false;  // from the default parameters' film set somewhere
+    for (const auto& [x, y] : {std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{3u, 2u}}) {
+      const PointSet film = registry_set(spp, PixelSampler::set_seed_for_test(7, x, y, 0));
+      const PointSet default_film = registry_set(spp, PixelSampler::set_seed_for_test(7, x, y, 0), false);
+      const std::uint64_t continued_seed = PixelSampler::array_seed_for_test(7, x, y, 1, PixelSampler::tag_continued);
+      const PointSet continued_arrays = continued ? registry_set(spp * spp, continued_seed) : PointSet{};
+      for (std::uint32_t index = 0; index < spp; ++index) {
+        sampler.start_pixel_sample(x, y, index);
+        const auto p = sampler.get_2d();
+        EXPECT_EQ(p[0], film(index, 0)) << name << " " << index;
+        EXPECT_EQ(p[1], film(index, 1)) << name << " " << index;
+        differs = differs || p[0] != default_film(index, 0) || p[1] != default_film(index, 1);
+        std::vector<std::array<double, 2>> array(spp);
+        sampler.get_2d_array(spp, array.data());
+        const PointSet own =
+            continued ? PointSet{} : registry_set(spp, PixelSampler::array_seed_for_test(7, x, y, 1, index));
+        const PointSet& arrays = continued ? continued_arrays : own;
+        const std::uint64_t first = continued ? std::uint64_t{spp} * index : 0;
+        for (std::uint32_t i = 0; i < spp; ++i) {
+          EXPECT_EQ(array[i][0], arrays(first + i, 0)) << name << " " << index << " " << i;
+          EXPECT_EQ(array[i][1], arrays(first + i, 1)) << name << " " << index << " " << i;
+        }
+      }
+    }
+    EXPECT_EQ(differs, moves_points) << name << ": the parameters moved none of the film points, or some";
+  }
+  for (const SamplerInfo& info : samplers()) {
+    const bool image = info.zsobol_image || info.ranked_image;
+    if (!info.params.empty() && !image && !info.flags.space_time) {
+      EXPECT_TRUE(covered.contains(info.name)) << info.name << " has parameters and no case here";
+    }
+  }
+  // Bad values are the registry's errors, named.
+  PixelSamplerSettings bad = settings("cmj", 16);
+  bad.params = {{"aspect", "-1"}};
+  EXPECT_THROW(PixelSampler{bad}, invalid_argument);
+  bad = settings("fibonacci", 16);
+  bad.params = {{"strict", "1"}};
+  EXPECT_THROW(PixelSampler{bad}, invalid_argument);
+  bad = settings("jittered", 16);
+  bad.params = {{"strata", "4x8"}};
+  try {
+    PixelSampler{bad};
+    ADD_FAILURE() << "jittered(strata=4x8) at 16 spp accepted";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("strata"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PixelSampler, AnImageSamplerTakesItsTileButNotItsPixel) {
+  // sobol-bn(table=FILE) draws over that rank tile (here the committed tile
+  // mirrored in x): the registry's pixel samples of that tile, not the
+  // committed tile's. pixel and resolution are the renderer's and refused.
+  const BlueNoiseTable& committed = default_blue_noise_table(BlueNoiseBase::sobol);
+  BlueNoiseTable mirrored = committed;
+  for (std::uint32_t y = 0; y < committed.size; ++y)
+    for (std::uint32_t x = 0; x < committed.size; ++x)
+      for (std::uint32_t p = 0; p < committed.pairs(); ++p)
+        mirrored.ranks[(std::size_t{y} * committed.size + x) * committed.pairs() + p] =
+            committed.rank(committed.size - 1 - x, y, p);
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("stratum-pixel-sampler-tile-" + std::to_string(::getpid()) + ".bin");
+  std::ofstream(path, std::ios::binary) << serialize_blue_noise_table(mirrored);
+  PixelSamplerSettings s = settings("sobol-bn", 4);
+  s.params = {{"table", path.string()}};
+  PixelSampler tiled(s);
+  PixelSampler plain(settings("sobol-bn", 4));
+  bool differs = false;
+  for (const auto& [x, y] : {std::pair{0u, 0u}, std::pair{1u, 0u}, std::pair{5u, 9u}}) {
+    SamplerRequest request;
+    request.n = 4, request.d = 2, request.seed = 7;
+    request.params = {{"table", path.string()}, {"pixel", std::to_string(x) + "," + std::to_string(y)}};
+    const PointSet set = generate_points("sobol-bn", request);
+    for (std::uint32_t index = 0; index < 4; ++index) {
+      tiled.start_pixel_sample(x, y, index);
+      plain.start_pixel_sample(x, y, index);
+      const auto p = tiled.get_2d();
+      const auto q = plain.get_2d();
+      EXPECT_EQ(p[0], set(index, 0)) << x << "," << y << " " << index;
+      EXPECT_EQ(p[1], set(index, 1)) << x << "," << y << " " << index;
+      differs = differs || p != q;
+    }
+  }
+  EXPECT_TRUE(differs);
+  std::filesystem::remove(path);
+  for (const auto& [name, key, value] :
+       {std::tuple{"zsobol", "resolution", "64"}, std::tuple{"sobol-bn", "pixel", "1,2"},
+        std::tuple{"zsobol", "pixel", "0,0"}}) {
+    PixelSamplerSettings refused = settings(name, 4);
+    refused.params = {{key, value}};
+    try {
+      PixelSampler{refused};
+      ADD_FAILURE() << name << " took " << key;
+    } catch (const invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string(key) + " is the renderer's own"), std::string::npos) << e.what();
     }
   }
 }

@@ -24,7 +24,7 @@ namespace stratum {
 struct KeyedPairs;       // stratum/patterns/keyed_pairs.hpp
 class HaltonPairTables;  // stratum/registry/halton_pair_tables.hpp
 class ZSobol;            // stratum/sequences/zsobol.hpp
-class RankedBlueNoise;   // stratum/sequences/ranked_blue_noise.hpp
+struct BlueNoiseTable;   // stratum/sequences/ranked_blue_noise.hpp
 
 /// Every randomizer as a value: a generator switches on it once (one
 /// switch per construction), the faces spell it by randomizer_name.
@@ -206,10 +206,13 @@ struct SamplerInfo {
   std::function<std::optional<HaltonPairTables>(Randomizer)> pair_tables{};
   /// A screen-space pixel sampler's image sampler (its draws need the pixel,
   /// not a set per pixel): zsobol's Morton-ordered sequence for an image whose
-  /// larger side is `resolution`, or a ranked blue-noise sampler over its
-  /// committed tile, for spp samples a pixel and a seed. Absent elsewhere.
+  /// larger side is `resolution`, for spp samples a pixel and a seed; or a
+  /// ranked blue-noise sampler's rank tile for a validated request with its
+  /// parameters bound (the committed tile, or the one its `table` names),
+  /// over which the renderer builds RankedBlueNoise(tile, spp, seed). Absent
+  /// elsewhere.
   std::function<ZSobol(std::uint32_t resolution, std::uint64_t spp, std::uint64_t seed)> zsobol_image{};
-  std::function<RankedBlueNoise(std::uint64_t spp, std::uint64_t seed)> ranked_image{};
+  std::function<std::shared_ptr<const BlueNoiseTable>(const SamplerRequest&)> ranked_image{};
   /// The accepted values of --randomize, front() the default: derived from
   /// `randomization` when the registry is built (accepted_randomizers).
   std::vector<std::string> randomizers{};

@@ -71,10 +71,9 @@ std::vector<CompareConfig> read_configs(const nlohmann::json& configs, const Ren
 
 /// Sets the pixel sampler's name and randomizer from a sampler spec
 /// (docs/samplers.md) with -p items and a separate randomizer folded in
-/// (combine_sampler_options); `argument` names the spec in errors. The pixel
-/// sampler takes no sampler parameters, so a spec with some is refused.
-void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& argument, const std::string& spec,
-                       const std::vector<std::string>& params, const std::string& randomize);
+/// (combine_sampler_options, which names the spec in errors).
+void set_pixel_sampler(PixelSamplerSettings& settings, const std::string& spec, const std::vector<std::string>& params,
+                       const std::string& randomize);
 
 /// The converged reference for `settings`' estimand (integrator, depth,
 /// scene, resolution): loaded from `cache_dir` when there, else rendered

@@ -64,6 +64,8 @@
 /// SetBinder (the request validated once) and cache it.
 #include <array>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -89,6 +91,11 @@ struct PixelSamplerSettings {
   /// pixels along a Morton curve of this size. 0: one pixel.
   std::uint32_t resolution = 0;
   std::uint32_t frame = 0;  ///< the animation frame (see above); (frame + 1) · spp ≤ 2^32
+  /// The sampler's parameters (its spec's KEY=VALUE items, as text): every
+  /// set the sampler draws, pixel sets and shadow-ray arrays, is the
+  /// registry's set under them. An image sampler's pixel and resolution are
+  /// the renderer's and are refused.
+  std::map<std::string, std::string> params{};
 };
 
 class PixelSampler {
@@ -148,6 +155,8 @@ class PixelSampler {
     get_2d_array_slow(seed, dimension_ - 1, n, start, out);
   }
 
+  /// The sampler as a spec (docs/samplers.md): NAME(KEY=VALUE,…):RANDOMIZER, as given.
+  std::string spec() const;
   /// Point set `dimension` of a pixel, as drawn (for tests): the registry's
   /// points for seed hash(pixel key, dimension).
   PointSet draw_for_test(std::uint64_t n, std::uint64_t seed) const { return draw(settings_.sampler, n, 2, seed); }
@@ -272,6 +281,7 @@ class PixelSampler {
   /// per render (derived once); per pixel and dimension its keyed pair, valid
   /// when its stamp is this pixel's.
   std::optional<RankedBlueNoise> ranked_bn_;
+  std::shared_ptr<const BlueNoiseTable> ranked_tile_;  ///< ranked_bn_'s tile (the committed one or a table file)
   std::vector<RankedBlueNoise::PixelPair> ranked_bn_shared_, ranked_bn_pixel_;
   std::vector<std::uint64_t> ranked_bn_stamps_;
   const RankedBlueNoise::PixelPair& ranked_bn_pair(std::uint32_t dimension) {
