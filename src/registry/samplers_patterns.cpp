@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -268,23 +269,43 @@ class NQueensSeeded final : public InlinePoints<NQueensSeeded> {
 /// generator (tested).
 class CmjSeeded final : public SeededGenerator {
   using Keys = CorrelatedMultiJittered::Keys;
+  /// Up to this many columns and rows together, a seed's state also holds
+  /// their permutations (a byte each): a renderer's set draws every point,
+  /// so m + k permutations per set replace two per point.
+  static constexpr std::uint64_t max_tabled = 64;
 
  public:
-  explicit CmjSeeded(const CorrelatedMultiJittered& shape) : shape_(shape) {}
-  std::size_t state_words() const noexcept override { return 4; }
+  explicit CmjSeeded(const CorrelatedMultiJittered& shape)
+      : shape_(shape), tabled_(shape.columns() + shape.rows() <= max_tabled) {}
+  std::size_t state_words() const noexcept override {
+    return 4 + (tabled_ ? (shape_.columns() + shape_.rows() + 7) / 8 : 0);
+  }
   void seed(std::uint64_t seed, unsigned, std::uint64_t* state) const noexcept override {
     const Keys k = shape_.keys(CorrelatedMultiJittered::pattern_of(seed));
     const auto pair = [](std::uint32_t low, std::uint32_t high) { return low | std::uint64_t{high} << 32; };
     state[0] = pair(k.shuffle, k.across), state[1] = pair(k.down, k.jitter_x);
     state[2] = pair(k.jitter_y, k.shuffle_rotation), state[3] = pair(k.across_rotation, k.down_rotation);
+    if (!tabled_) return;
+    const auto m = static_cast<std::uint32_t>(shape_.columns()), rows = static_cast<std::uint32_t>(shape_.rows());
+    std::uint8_t table[max_tabled + 8] = {};
+    for (std::uint32_t c = 0; c < m; ++c) table[c] = static_cast<std::uint8_t>(shape_.permuted_column(k, c));
+    for (std::uint32_t r = 0; r < rows; ++r) table[m + r] = static_cast<std::uint8_t>(shape_.permuted_row(k, r));
+    std::memcpy(state + 4, table, 8 * (state_words() - 4));
   }
   void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
              double* out) const noexcept override {
-    shape_.sample_for(keys_of(state), index, coordinates, out);
+    points(state, index, 1, coordinates, out);
   }
   void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
-              double* out) const noexcept override {  // point's body inline: a shadow-ray array in one call
+              double* out) const noexcept override {  // inline per point: a shadow-ray array in one call
     const Keys k = keys_of(state);
+    if (tabled_) {
+      const auto* columns = reinterpret_cast<const std::uint8_t*>(state + 4);  // bytes of the words: allowed aliasing
+      const std::uint8_t* rows = columns + shape_.columns();
+      for (std::uint64_t i = 0; i < count; ++i)
+        shape_.sample_from_tables(k, columns, rows, first + i, coordinates, out + i * coordinates);
+      return;
+    }
     for (std::uint64_t i = 0; i < count; ++i) shape_.sample_for(k, first + i, coordinates, out + i * coordinates);
   }
 
@@ -296,6 +317,7 @@ class CmjSeeded final : public SeededGenerator {
             low(state[2]), high(state[2]), low(state[3]), high(state[3])};
   }
   CorrelatedMultiJittered shape_;  ///< n, aspect (its own pattern unused)
+  bool tabled_;                    ///< columns + rows ≤ max_tabled: the state holds their permutations
 };
 
 static SamplerInfo latin_hypercube_entry(std::string name, std::string description) {

@@ -135,6 +135,32 @@ TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
                                    "hammersley:permute", "n-queens:none", "n-queens:cp"}));
 }
 
+TEST(GeneratorBinder, CmjsSeededPointsEqualBindsWithAndWithoutItsTables) {
+  // cmj's state holds its column and row permutations up to 64 columns and
+  // rows together (n = 1024 at aspect 1: 32 + 32), beyond that only the keys:
+  // both give bind's points, at counts on either side, square or not.
+  for (const std::uint64_t n : {1ull, 2ull, 3ull, 17ull, 1023ull, 1024ull, 1025ull, 1089ull})
+    for (const char* aspect : {"1", "2.7"}) {
+      SamplerRequest request;
+      request.n = n, request.d = 2, request.params = {{"aspect", aspect}};
+      const GeneratorBinder binder("cmj", request);
+      ASSERT_TRUE(binder.seeded());
+      const SeededGenerator& generator = *binder.seeded();
+      std::vector<std::uint64_t> state(generator.state_words());
+      std::vector<double> points(2 * n);
+      for (const std::uint64_t seed : {5ull, 0xfeedfacecafebeefull}) {
+        generator.seed(seed, 2, state.data());
+        generator.points(state.data(), 0, n, 2, points.data());
+        SamplerRequest fresh = request;
+        fresh.seed = seed;
+        const PointGenerator expected = bind_generator("cmj", fresh);
+        for (std::uint64_t i = 0; i < n; ++i)
+          for (unsigned j = 0; j < 2; ++j)
+            ASSERT_EQ(points[2 * i + j], expected.sample(i, j)) << n << " " << aspect << " " << seed << " " << i;
+      }
+    }
+}
+
 TEST(SetBinder, GeneratesWhatGeneratePointsGeneratesForEverySeed) {
   // Every sampler (those made as a whole set too) at a count it takes, under
   // each randomizer: validated once, its sets per seed equal generate_points'.

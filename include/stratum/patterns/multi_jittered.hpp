@@ -261,18 +261,43 @@ class CorrelatedMultiJittered {
     out[0] = x_of<Real>(keys, s);
     if (coordinates >= 2) out[1] = y_of<Real>(keys, s);
   }
+  /// sample_for with the column and row permutations read from tables
+  /// (columns[c] = permuted_column(keys, c), rows[r] = permuted_row(keys, r)):
+  /// a set of n points takes m + k permutations of its columns and rows
+  /// instead of two per point (the same points).
+  template <class Real = double, class Entry>
+  void sample_from_tables(const Keys& keys, const Entry* columns, const Entry* rows, std::uint64_t index,
+                          unsigned coordinates, Real* out) const noexcept {
+    if (coordinates == 0) return;
+    const std::uint32_t s = shuffled(keys, index);
+    const std::uint32_t row = row_of(s);
+    out[0] = x_at<Real>(keys, s, columns[s - row * columns_], rows[row]);
+    if (coordinates >= 2) out[1] = y_of<Real>(keys, s);
+  }
+  /// Column c's place among the columns (Kensler's sx of the points in it).
+  std::uint32_t permuted_column(const Keys& k, std::uint32_t c) const noexcept {
+    return across_.permute(c, k.across, k.across_rotation);
+  }
+  /// Row r's place within its column's cell (Kensler's sy of the points in it).
+  std::uint32_t permuted_row(const Keys& k, std::uint32_t r) const noexcept {
+    return down_.permute(r, k.down, k.down_rotation);
+  }
 
  private:
   /// Kensler's shuffled sample index s.
   std::uint32_t shuffled(const Keys& k, std::uint64_t index) const noexcept {
     return all_.permute(static_cast<std::uint32_t>(index), k.shuffle, k.shuffle_rotation);
   }
+  std::uint32_t row_of(std::uint32_t s) const noexcept {  // s / m
+    return columns_ >= 2 ? static_cast<std::uint32_t>(column_divider_.quotient(s)) : s;
+  }
   template <class Real>
   Real x_of(const Keys& k, std::uint32_t s) const noexcept {
-    const std::uint64_t row = columns_ >= 2 ? column_divider_.quotient(s) : s;  // s / m
-    const std::uint64_t sx =
-        across_.permute(static_cast<std::uint32_t>(s - row * columns_), k.across, k.across_rotation);
-    const std::uint64_t sy = down_.permute(static_cast<std::uint32_t>(row), k.down, k.down_rotation);
+    const std::uint32_t row = row_of(s);
+    return x_at<Real>(k, s, permuted_column(k, static_cast<std::uint32_t>(s - row * columns_)), permuted_row(k, row));
+  }
+  template <class Real>
+  Real x_at(const Keys& k, std::uint32_t s, std::uint64_t sx, std::uint64_t sy) const noexcept {
     const double jx = kensler_hash(s, k.jitter_x) * 0x1.0p-32;
     // (sx + (sy + jx) / k) / m = (sx·k + sy + jx) / (m·k)
     return cell_coordinate<Real>(sx * rows_ + sy, jx, columns_ * rows_);
