@@ -269,28 +269,46 @@ class NQueensSeeded final : public InlinePoints<NQueensSeeded> {
 /// generator (tested).
 class CmjSeeded final : public SeededGenerator {
   using Keys = CorrelatedMultiJittered::Keys;
-  /// Up to this many columns and rows together, a seed's state also holds
-  /// their permutations (a byte each): a renderer's set draws every point,
-  /// so m + k permutations per set replace two per point.
+  /// A renderer's set draws every point of it, so a small set's seed makes
+  /// them all at once (up to this n, its points are the state: the
+  /// permutations' walks side by side, and a point drawn is a load) ...
+  static constexpr std::uint64_t max_stored = 64;
+  /// ... and a larger one's state holds the column and row permutations (a
+  /// byte each, up to this many together): m + k permutations a set instead
+  /// of two a point. Beyond both, the keys alone.
   static constexpr std::uint64_t max_tabled = 64;
+  enum class Form { points, tables, keys };
 
  public:
   explicit CmjSeeded(const CorrelatedMultiJittered& shape)
-      : shape_(shape), tabled_(shape.columns() + shape.rows() <= max_tabled) {}
+      : shape_(shape),
+        form_(shape.count() <= max_stored                    ? Form::points
+              : shape.columns() + shape.rows() <= max_tabled ? Form::tables
+                                                             : Form::keys) {}
   std::size_t state_words() const noexcept override {
-    return 4 + (tabled_ ? (shape_.columns() + shape_.rows() + 7) / 8 : 0);
+    if (form_ == Form::points) return 2 * shape_.count();
+    return 4 + (form_ == Form::tables ? (shape_.columns() + shape_.rows() + 7) / 8 : 0);
   }
-  void seed(std::uint64_t seed, unsigned, std::uint64_t* state) const noexcept override {
+  void seed(std::uint64_t seed, unsigned coordinates, std::uint64_t* state) const noexcept override {
     const Keys k = shape_.keys(CorrelatedMultiJittered::pattern_of(seed));
-    const auto pair = [](std::uint32_t low, std::uint32_t high) { return low | std::uint64_t{high} << 32; };
-    state[0] = pair(k.shuffle, k.across), state[1] = pair(k.down, k.jitter_x);
-    state[2] = pair(k.jitter_y, k.shuffle_rotation), state[3] = pair(k.across_rotation, k.down_rotation);
-    if (!tabled_) return;
+    if (form_ == Form::keys) return store_keys(k, state);
     const auto m = static_cast<std::uint32_t>(shape_.columns()), rows = static_cast<std::uint32_t>(shape_.rows());
-    std::uint8_t table[max_tabled + 8] = {};
-    for (std::uint32_t c = 0; c < m; ++c) table[c] = static_cast<std::uint8_t>(shape_.permuted_column(k, c));
-    for (std::uint32_t r = 0; r < rows; ++r) table[m + r] = static_cast<std::uint8_t>(shape_.permuted_row(k, r));
-    std::memcpy(state + 4, table, 8 * (state_words() - 4));
+    std::uint8_t table[2 * max_stored + 8] = {};  // m + k ≤ 2n (points) or ≤ max_tabled (tables)
+    fill_last_by_elimination(table, m, [&](std::uint32_t c) { return shape_.permuted_column(k, c); });
+    fill_last_by_elimination(table + m, rows, [&](std::uint32_t r) { return shape_.permuted_row(k, r); });
+    if (form_ == Form::tables) {
+      store_keys(k, state);
+      std::memcpy(state + 4, table, 8 * (state_words() - 4));
+      return;
+    }
+    const auto n = static_cast<std::uint32_t>(shape_.count());
+    std::uint8_t shuffled[max_stored];
+    fill_last_by_elimination(shuffled, n, [&](std::uint32_t i) { return shape_.shuffled(k, i); });
+    for (std::uint32_t i = 0; i < n; ++i) {
+      double point[2] = {0.0, 0.0};
+      shape_.sample_of_shuffled(k, table, table + m, shuffled[i], std::min(coordinates, 2u), point);
+      state[2 * i] = std::bit_cast<std::uint64_t>(point[0]), state[2 * i + 1] = std::bit_cast<std::uint64_t>(point[1]);
+    }
   }
   void point(const std::uint64_t* state, std::uint64_t index, unsigned coordinates,
              double* out) const noexcept override {
@@ -298,8 +316,14 @@ class CmjSeeded final : public SeededGenerator {
   }
   void points(const std::uint64_t* state, std::uint64_t first, std::uint64_t count, unsigned coordinates,
               double* out) const noexcept override {  // inline per point: a shadow-ray array in one call
+    if (form_ == Form::points) {
+      for (std::uint64_t i = 0; i < count; ++i)
+        for (unsigned j = 0; j < coordinates; ++j)
+          out[i * coordinates + j] = std::bit_cast<double>(state[2 * (first + i) + j]);
+      return;
+    }
     const Keys k = keys_of(state);
-    if (tabled_) {
+    if (form_ == Form::tables) {
       const auto* columns = reinterpret_cast<const std::uint8_t*>(state + 4);  // bytes of the words: allowed aliasing
       const std::uint8_t* rows = columns + shape_.columns();
       for (std::uint64_t i = 0; i < count; ++i)
@@ -310,6 +334,20 @@ class CmjSeeded final : public SeededGenerator {
   }
 
  private:
+  /// out[i] = permuted(i) for i < l − 1, and the last value the one the
+  /// others leave (the XOR of 0 … l − 1 and of the values before it): a
+  /// permutation's walk saved.
+  template <class Entry, class Permuted>
+  static void fill_last_by_elimination(Entry* out, std::uint32_t l, Permuted permuted) noexcept {
+    std::uint32_t left = l - 1;
+    for (std::uint32_t i = 0; i + 1 < l; ++i) out[i] = static_cast<Entry>(permuted(i)), left ^= i ^ out[i];
+    out[l - 1] = static_cast<Entry>(left);
+  }
+  static void store_keys(const Keys& k, std::uint64_t* state) noexcept {
+    const auto pair = [](std::uint32_t low, std::uint32_t high) { return low | std::uint64_t{high} << 32; };
+    state[0] = pair(k.shuffle, k.across), state[1] = pair(k.down, k.jitter_x);
+    state[2] = pair(k.jitter_y, k.shuffle_rotation), state[3] = pair(k.across_rotation, k.down_rotation);
+  }
   static Keys keys_of(const std::uint64_t* state) noexcept {
     const auto low = [](std::uint64_t word) { return static_cast<std::uint32_t>(word); };
     const auto high = [](std::uint64_t word) { return static_cast<std::uint32_t>(word >> 32); };
@@ -317,7 +355,7 @@ class CmjSeeded final : public SeededGenerator {
             low(state[2]), high(state[2]), low(state[3]), high(state[3])};
   }
   CorrelatedMultiJittered shape_;  ///< n, aspect (its own pattern unused)
-  bool tabled_;                    ///< columns + rows ≤ max_tabled: the state holds their permutations
+  Form form_;
 };
 
 static SamplerInfo latin_hypercube_entry(std::string name, std::string description) {

@@ -135,11 +135,12 @@ TEST(GeneratorBinder, SeededGeneratorsDrawWhatTheirBindingsDraw) {
                                    "hammersley:permute", "n-queens:none", "n-queens:cp"}));
 }
 
-TEST(GeneratorBinder, CmjsSeededPointsEqualBindsWithAndWithoutItsTables) {
-  // cmj's state holds its column and row permutations up to 64 columns and
-  // rows together (n = 1024 at aspect 1: 32 + 32), beyond that only the keys:
-  // both give bind's points, at counts on either side, square or not.
-  for (const std::uint64_t n : {1ull, 2ull, 3ull, 17ull, 1023ull, 1024ull, 1025ull, 1089ull})
+TEST(GeneratorBinder, CmjsSeededPointsEqualBindsInEachFormOfItsState) {
+  // cmj's state is the points themselves up to n = 64, then its column and
+  // row permutations up to 64 columns and rows together (n = 1024 at aspect
+  // 1: 32 + 32), beyond that only the keys: each gives bind's points, at
+  // counts on either side of both limits, square or not.
+  for (const std::uint64_t n : {1ull, 2ull, 3ull, 17ull, 64ull, 65ull, 1023ull, 1024ull, 1025ull, 1089ull})
     for (const char* aspect : {"1", "2.7"}) {
       SamplerRequest request;
       request.n = n, request.d = 2, request.params = {{"aspect", aspect}};

@@ -268,8 +268,13 @@ class CorrelatedMultiJittered {
   template <class Real = double, class Entry>
   void sample_from_tables(const Keys& keys, const Entry* columns, const Entry* rows, std::uint64_t index,
                           unsigned coordinates, Real* out) const noexcept {
+    sample_of_shuffled(keys, columns, rows, shuffled(keys, index), coordinates, out);
+  }
+  /// sample_from_tables for the point whose shuffled index is s (shuffled(keys, index)).
+  template <class Real = double, class Entry>
+  void sample_of_shuffled(const Keys& keys, const Entry* columns, const Entry* rows, std::uint32_t s,
+                          unsigned coordinates, Real* out) const noexcept {
     if (coordinates == 0) return;
-    const std::uint32_t s = shuffled(keys, index);
     const std::uint32_t row = row_of(s);
     out[0] = x_at<Real>(keys, s, columns[s - row * columns_], rows[row]);
     if (coordinates >= 2) out[1] = y_of<Real>(keys, s);
@@ -282,12 +287,12 @@ class CorrelatedMultiJittered {
   std::uint32_t permuted_row(const Keys& k, std::uint32_t r) const noexcept {
     return down_.permute(r, k.down, k.down_rotation);
   }
-
- private:
-  /// Kensler's shuffled sample index s.
+  /// Kensler's shuffled sample index s of point `index` (a permutation of 0 … n − 1).
   std::uint32_t shuffled(const Keys& k, std::uint64_t index) const noexcept {
     return all_.permute(static_cast<std::uint32_t>(index), k.shuffle, k.shuffle_rotation);
   }
+
+ private:
   std::uint32_t row_of(std::uint32_t s) const noexcept {  // s / m
     return columns_ >= 2 ? static_cast<std::uint32_t>(column_divider_.quotient(s)) : s;
   }

@@ -42,7 +42,7 @@ inline bool below_exactly(double x, double n, double c) noexcept {
 /// guaranteed to satisfy cell ≤ x · count < cell + 1 exactly and
 /// floor(fl(x · count)) = cell. Requires cell < count ≤ 2^53.
 template <class Real = double>
-inline Real cell_coordinate(std::uint64_t cell, double offset, std::uint64_t count) noexcept {
+[[gnu::always_inline]] inline Real cell_coordinate(std::uint64_t cell, double offset, std::uint64_t count) noexcept {
   const double n = static_cast<double>(count);
   const double lo = static_cast<double>(cell);
   const double hi = static_cast<double>(cell + 1);
