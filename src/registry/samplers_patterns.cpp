@@ -327,7 +327,7 @@ class CmjSeeded final : public SeededGenerator {
       const auto* columns = reinterpret_cast<const std::uint8_t*>(state + 4);  // bytes of the words: allowed aliasing
       const std::uint8_t* rows = columns + shape_.columns();
       for (std::uint64_t i = 0; i < count; ++i)
-        shape_.sample_from_tables(k, columns, rows, first + i, coordinates, out + i * coordinates);
+        shape_.sample_of_shuffled(k, columns, rows, shape_.shuffled(k, first + i), coordinates, out + i * coordinates);
       return;
     }
     for (std::uint64_t i = 0; i < count; ++i) shape_.sample_for(k, first + i, coordinates, out + i * coordinates);

@@ -7,10 +7,10 @@
 #include "stratum/patterns/strata.hpp"
 #include "stratum/sequences/pmj.hpp"
 #include "stratum/memory.hpp"
+#include "stratum/registry/spec.hpp"
 #include "stratum/sequences/sobol.hpp"
 #include "stratum/util/error.hpp"
 #include "stratum/util/hash.hpp"
-#include "stratum/registry/spec.hpp"
 #include "stratum/util/real.hpp"
 
 namespace stratum::render {

@@ -261,16 +261,11 @@ class CorrelatedMultiJittered {
     out[0] = x_of<Real>(keys, s);
     if (coordinates >= 2) out[1] = y_of<Real>(keys, s);
   }
-  /// sample_for with the column and row permutations read from tables
+  /// sample_for of the point whose shuffled index is s (shuffled(keys,
+  /// index)), the column and row permutations read from tables
   /// (columns[c] = permuted_column(keys, c), rows[r] = permuted_row(keys, r)):
   /// a set of n points takes m + k permutations of its columns and rows
   /// instead of two per point (the same points).
-  template <class Real = double, class Entry>
-  void sample_from_tables(const Keys& keys, const Entry* columns, const Entry* rows, std::uint64_t index,
-                          unsigned coordinates, Real* out) const noexcept {
-    sample_of_shuffled(keys, columns, rows, shuffled(keys, index), coordinates, out);
-  }
-  /// sample_from_tables for the point whose shuffled index is s (shuffled(keys, index)).
   template <class Real = double, class Entry>
   void sample_of_shuffled(const Keys& keys, const Entry* columns, const Entry* rows, std::uint32_t s,
                           unsigned coordinates, Real* out) const noexcept {
