@@ -73,9 +73,9 @@ TEST(CorePixelSampler, EachPixelsSetHasItsTechniquesProperty) {
     for (std::uint32_t dimension : {0u, 3u}) {
       EXPECT_TRUE(one_per_cell(pixel_set(jittered, 1, 9, dimension), k, k));
       const Points set = pixel_set(cmj, 1, 9, dimension);
-      EXPECT_TRUE(one_per_cell(set, k, k));             // one point per cell of the k × k grid
-      EXPECT_TRUE(one_per_cell(set, k * k, 1));         // Latin in x …
-      EXPECT_TRUE(one_per_cell(set, 1, k * k));         // … and in y
+      EXPECT_TRUE(one_per_cell(set, k, k));      // one point per cell of the k × k grid
+      EXPECT_TRUE(one_per_cell(set, k * k, 1));  // Latin in x …
+      EXPECT_TRUE(one_per_cell(set, 1, k * k));  // … and in y
     }
   }
   // Unequal to the next dimension's and the next pixel's set.

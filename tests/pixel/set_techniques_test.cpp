@@ -76,9 +76,9 @@ TEST(SetTechniques, RotatedSequencesAreTheRegistrysSets) {
     const std::string randomizer = rotate ? "cp" : "none";
     expect_registry_sets(HaltonTechnique{{}, rotate}, "halton", randomizer);
     expect_registry_sets(KroneckerTechnique{Kronecker2D::of(Kronecker(2)), rotate}, "kronecker", randomizer);
-    expect_registry_sets(KroneckerTechnique{Kronecker2D::of(Kronecker(std::vector<double>{0.25, 0.6180339887}, 0.5)),
-                                            rotate},
-                         "kronecker", randomizer, {{"alpha", "0.25,0.6180339887"}, {"offset", "0.5"}});
+    expect_registry_sets(
+        KroneckerTechnique{Kronecker2D::of(Kronecker(std::vector<double>{0.25, 0.6180339887}, 0.5)), rotate},
+        "kronecker", randomizer, {{"alpha", "0.25,0.6180339887"}, {"offset", "0.5"}});
     expect_registry_sets(LatticeSequenceTechnique{{}, rotate}, "lattice-sequence", randomizer);
     expect_registry_sets(LatticeSequenceTechnique{{{{1, 182667}}}, rotate}, "lattice-sequence", randomizer,
                          {{"generator", "1,182667"}});

@@ -85,7 +85,8 @@ struct Shared {
                                     std::uint32_t frame = 0) {
     if (spp == 0 || !technique.takes(spp)) return std::nullopt;
     if ((std::uint64_t{frame} + 1) * spp > (std::uint64_t{1} << 32)) return std::nullopt;
-    return Shared{technique, technique.shape(spp), Technique::progressive || frame == 0 ? seed : hash64(seed, tag_frame, frame),
+    return Shared{technique, technique.shape(spp),
+                  Technique::progressive || frame == 0 ? seed : hash64(seed, tag_frame, frame),
                   Technique::progressive ? std::uint64_t{frame} * spp : 0, spp};
   }
 };
