@@ -3,7 +3,7 @@
 # (.clang-format), lints the core headers (.clang-tidy) and checks that the
 # CMake files list every source, builds Release and runs ctest (the
 # CLI, MPI, report and CUDA tests) and pytest, runs the parsers' fuzz targets
-# briefly, builds the consumer example against an installed package, then
+# briefly, builds the consumer and pixel-sampling examples against an installed package, then
 # builds everything with AddressSanitizer + UBSan and runs the gtests (one
 # process per core) and the CLI tests there. The gtests are built once, in the
 # sanitizer build: compiling them is most of the build time. What only Release
@@ -36,6 +36,12 @@ cmake --install build/release --prefix build/install >/dev/null
 cmake -S examples/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
 cmake --build build/consumer >/dev/null
 build/consumer/consumer
+echo "== the pixel-sampling example against the installed core headers alone (docs/pixel-sampling.md)"
+rm -rf build/pixel_sampler_example
+cmake -S examples/pixel_sampler -B build/pixel_sampler_example -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" \
+  -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build/pixel_sampler_example >/dev/null
+build/pixel_sampler_example/pixel_sampler_example 16
 echo "== the installed CLI, run through PATH from another folder, loads the installed OpenImageIO module for a TIFF"
 echo "   (and no module for a PNG, which libpng writes)"
 (cd / && PATH="$OLDPWD/build/install/bin:$PATH" LD_DEBUG=files \
