@@ -33,9 +33,9 @@ done < <(git ls-files -- 'tests/*_test.cpp')
 # a library's headers live in src/<library>/include, so no program that uses
 # only stratum::core sees them on its include path.
 while read -r file; do
-  echo "check-sources: $file is in the core's include tree but not in a core folder (sequences, patterns," \
+  echo "check-sources: $file is in the core's include tree but not in a core folder (sequences, patterns, pixel," \
     "randomizers, warps, estimators, spacetime, util): a library header goes to src/<library>/include" >&2
   missing=1
-done < <(git ls-files -- include | grep -vE '^include/stratum/(sequences|patterns|randomizers|warps|estimators|spacetime|util)/[^/]+\.hpp$' || true)
+done < <(git ls-files -- include | grep -vE '^include/stratum/(sequences|patterns|randomizers|warps|estimators|spacetime|util|pixel)/[^/]+\.hpp$' || true)
 [ "$missing" = 0 ] && echo "check-sources: every source is listed in its CMake file"
 exit "$missing"
