@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "device_present.hpp"
 #include "stratum/pixel/pixel_sampler.hpp"
 #include "stratum/pixel/set_techniques.hpp"
 
@@ -19,7 +20,6 @@ namespace {
 
 using namespace stratum::pixel;
 
-constexpr int skip_exit_code = 77;
 constexpr unsigned side = 32, spp = 8, array_count = 4;
 constexpr unsigned values_per_sample = 2 + 2 + 1 + 2 * array_count;
 
@@ -90,15 +90,8 @@ void compare(const char* name, const Technique& device_technique, const Techniqu
 }  // namespace
 
 int main() {
-  int devices = 0;
-  const cudaError_t status = cudaGetDeviceCount(&devices);
-  if (status != cudaSuccess || devices == 0) {
-    std::printf(
-        "SKIPPED: no CUDA device to run the pixel samplers on (cudaGetDeviceCount: %s, %d devices); "
-        "the kernels were compiled and their PTX is checked by cuda_ptx_check\n",
-        status == cudaSuccess ? "no error" : cudaGetErrorString(status), devices);
-    return skip_exit_code;
-  }
+  if (!stratum::cuda_testing::device_present("the pixel samplers", "cuda_pixel_ptx_check"))
+    return stratum::cuda_testing::skip_exit_code;
   const stratum::Sobol& sobol = stratum::Sobol::first_two();
   const stratum::Sobol::View device_sobol = sobol.view([](const std::uint64_t* data, std::size_t count) {
     return static_cast<const std::uint64_t*>(to_device(data, count));

@@ -24,6 +24,7 @@
 #include <span>
 #include <vector>
 
+#include "device_present.hpp"
 #include "stratum/randomizers/base2.hpp"
 #include "stratum/randomizers/digit_permutation.hpp"
 #include "stratum/randomizers/owen_base_b.hpp"
@@ -36,7 +37,6 @@
 
 namespace {
 
-constexpr int skip_exit_code = 77;
 constexpr unsigned block_size = 128;
 
 /// Sobol with a base-2 randomizer, as the registry composes it.
@@ -224,18 +224,8 @@ void compare_warps(DeviceArrays& arrays) {
 }  // namespace
 
 int main() {
-  int devices = 0;
-  const cudaError_t status = cudaGetDeviceCount(&devices);
-  if (status != cudaSuccess || devices == 0) {
-    std::printf(
-        "SKIPPED: no CUDA device to run the kernels on (cudaGetDeviceCount: %s, %d devices); "
-        "the kernels were compiled and their PTX is checked by cuda_ptx_check\n",
-        status == cudaSuccess ? "no error" : cudaGetErrorString(status), devices);
-    return skip_exit_code;
-  }
-  cudaDeviceProp properties{};
-  DeviceArrays::check(cudaGetDeviceProperties(&properties, 0), "cudaGetDeviceProperties");
-  std::printf("device 0: %s (compute capability %d.%d)\n", properties.name, properties.major, properties.minor);
+  if (!stratum::cuda_testing::device_present("the kernels", "cuda_ptx_check"))
+    return stratum::cuda_testing::skip_exit_code;
 
   DeviceArrays arrays;
   constexpr unsigned count = 1 << 14;
