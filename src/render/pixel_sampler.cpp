@@ -16,20 +16,21 @@
 namespace stratum::render {
 
 namespace {
-constexpr std::uint64_t tag_pixel = 0x5049'5845'4cULL;  // random-stream tags
-constexpr std::uint64_t tag_time = 0x5449'4d45ULL;
-constexpr std::uint64_t tag_frame = 0x4652'414d'45ULL;
+// The pixel, frame and array tags are the core pixel sampler's (stratum/pixel/pixel_sampler.hpp): one seeding scheme.
+using pixel::tag_frame;
+using pixel::tag_pixel;
+constexpr std::uint64_t tag_time = 0x5449'4d45ULL;  // random-stream tag of the time patterns
 
 }  // namespace
 
 std::uint64_t PixelSampler::set_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
                                               std::uint32_t dimension) noexcept {
-  return hash64(hash64(seed, tag_pixel, x, y), dimension);
+  return pixel::set_seed(seed, x, y, dimension);
 }
 
 std::uint64_t PixelSampler::array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
                                                 std::uint32_t dimension, std::uint64_t index) noexcept {
-  return hash64(hash64(seed, tag_pixel, x, y), tag_array, dimension, index);
+  return pixel::array_seed(seed, x, y, dimension, index);
 }
 
 PixelSampler::PixelSampler(PixelSamplerSettings settings) : settings_(std::move(settings)) {

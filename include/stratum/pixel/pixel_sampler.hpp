@@ -37,8 +37,9 @@
 /// K from seed hash64(seed, tag_frame, K) (independent frames). Frame 0 is
 /// the render without frames, bit for bit.
 ///
-/// These are the sets stratum's renderer draws and the registry's points of
-/// the same sampler for those seeds (tests/pixel/pixel_sampler_test.cpp).
+/// These are the sets stratum's renderer draws (tests/render/core_draws_test.cpp)
+/// and the registry's points of the same sampler for those seeds
+/// (tests/pixel/set_techniques_test.cpp).
 #include <array>
 #include <cstdint>
 #include <optional>

@@ -72,6 +72,7 @@
 #include <vector>
 
 #include "stratum/patterns/keyed_pairs.hpp"
+#include "stratum/pixel/pixel_sampler.hpp"
 #include "stratum/registry.hpp"
 #include "stratum/registry/generator_binder.hpp"
 #include "stratum/registry/halton_pair_tables.hpp"
@@ -170,7 +171,7 @@ class PixelSampler {
   static std::uint64_t array_seed_for_test(std::uint64_t seed, std::uint32_t x, std::uint32_t y,
                                            std::uint32_t dimension, std::uint64_t index) noexcept;
   /// The last link of a progressive sampler's array seeds: above 2^32, so no sample index equals it.
-  static constexpr std::uint64_t tag_continued = 0x434f'4e54'494e'5545ULL;
+  static constexpr std::uint64_t tag_continued = pixel::tag_continued;
   /// Whether draws take the direct path (see above).
   bool direct() const noexcept { return keyed_.has_value(); }
 
@@ -328,7 +329,7 @@ class PixelSampler {
     return true;
   }
 
-  static constexpr std::uint64_t tag_array = 0x4152'5241'59ULL;  ///< get_2d_array's random-stream tag
+  static constexpr std::uint64_t tag_array = pixel::tag_array;  ///< get_2d_array's random-stream tag
 
   /// The sampler's sets as keyed pairs (patterns/keyed_pairs.hpp), where the
   /// registry gives them for its randomizer: the direct path. Point `index`
