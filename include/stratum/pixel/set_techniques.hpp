@@ -230,14 +230,14 @@ struct Kronecker2D {
     return {Kronecker::to_fraction(kronecker.offset()), {kronecker.alpha_fraction(0), kronecker.alpha_fraction(1)}};
   }
   STRATUM_HOST_DEVICE double value(std::uint64_t index, unsigned dim) const noexcept {
-    return Kronecker::to_double(offset + static_cast<Kronecker::u128>(index) * alpha[dim]);
+    return Kronecker::coordinate(index, offset, alpha[dim]);
   }
 };
 /// The extensible rank-1 lattice frac(φ₂(i)·g) (Hickernell et al. 2000), its generating vector's first two entries.
 struct LatticeSequence2D {
   std::array<std::uint64_t, 2> generator{LatticeSequence::default_generator[0], LatticeSequence::default_generator[1]};
   STRATUM_HOST_DEVICE double value(std::uint64_t index, unsigned dim) const noexcept {
-    return static_cast<double>((reverse_bits64(index) * generator[dim]) >> 11) * 0x1.0p-53;
+    return LatticeSequence::coordinate(index, generator[dim]);
   }
 };
 using HaltonTechnique = RotatedTechnique<Halton2D>;

@@ -73,7 +73,12 @@ class Kronecker {
   /// The coordinate, truncated to 53 (or 24) bits, so always < 1.
   template <class Real = double>
   constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(to_double(phase(index, dim)));
+    return coordinate<Real>(index, offset_, alpha_[dim]);
+  }
+  /// sample's coordinate for an offset and one α alone (the pixel sampler's pairs keep two α, not the vector).
+  template <class Real = double>
+  STRATUM_HOST_DEVICE static constexpr Real coordinate(std::uint64_t index, u128 offset, u128 alpha) noexcept {
+    return to_unit<Real>(to_double(offset + static_cast<u128>(index) * alpha));
   }
 
   /// φ_d, the positive root of x^(d+1) = x + 1, in double precision.

@@ -69,7 +69,12 @@ class LatticeSequence {
   /// The coordinate's 53 (or 24) leading bits, always < 1.
   template <class Real = double>
   constexpr Real sample(std::uint64_t index, unsigned dim) const noexcept {
-    return to_unit<Real>(static_cast<double>(fraction(index, dim) >> 11) * 0x1.0p-53);
+    return coordinate<Real>(index, generator_[dim]);
+  }
+  /// sample's coordinate for a generator entry g alone (the pixel sampler's pairs keep two entries, not the vector).
+  template <class Real = double>
+  STRATUM_HOST_DEVICE static constexpr Real coordinate(std::uint64_t index, std::uint64_t g) noexcept {
+    return to_unit<Real>(static_cast<double>((reverse_bits64(index) * g) >> 11) * 0x1.0p-53);
   }
 
  private:
